@@ -1,0 +1,28 @@
+"""Frictional torsional contact of two elastically similar flat-ended cylinders.
+
+Public interface (see CONTRACT.md): ``solve`` returns a ``Solution`` with the stick
+radius, the torque T* = 2T/(f F a), the rigid rotation, the regime and the fields.
+"""
+
+from .criteria import GROSS_SLIP_TORQUE, SLIP_ONSET_TORQUE
+from .formulations import METHODS
+from .solution import DEFAULT_METHOD, DEFAULT_N_TERMS, Solution, solve, torque_curve
+from .warnings import AccuracyWarning, IllConditioningWarning, ResolutionWarning, TruncationWarning
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "solve",
+    "Solution",
+    "torque_curve",
+    "METHODS",
+    "DEFAULT_METHOD",
+    "DEFAULT_N_TERMS",
+    "SLIP_ONSET_TORQUE",
+    "GROSS_SLIP_TORQUE",
+    "AccuracyWarning",
+    "IllConditioningWarning",
+    "ResolutionWarning",
+    "TruncationWarning",
+    "__version__",
+]
