@@ -185,6 +185,8 @@ def _invert(target: float, method: str, n_terms: int) -> SeriesSolution:
             stacklevel=3,
         )
     b = optimize.brentq(residual, lower, 1.0, xtol=_B_XTOL, rtol=4 * np.finfo(float).eps)
+    if lower == b_lo:  # otherwise the warning above has been given
+        return solve_series(b, method, n_terms)  # warns if the slip annulus is unresolved
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
         return solve_series(b, method, n_terms)
@@ -252,6 +254,5 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None) -> Solut
 def torque_curve(stick_radii, *, method=None, n_terms=None) -> np.ndarray:
     """T*(b) for an array of stick radii (Fig. 3), one series solve per radius."""
     radii = np.asarray(stick_radii, dtype=float)
-    return np.array([solve(stick_radius=float(b), method=method, n_terms=n_terms).torque for b in radii.ravel()]).reshape(
-        radii.shape
-    )
+    torques = [solve(stick_radius=float(b), method=method, n_terms=n_terms).torque for b in radii.ravel()]
+    return np.array(torques).reshape(radii.shape)
