@@ -52,6 +52,83 @@ def _cmd_solve(args) -> dict:
     return out
 
 
+class _StateList(list):
+    """A JSON list of states; ``items()`` numbers them for the plain-text output of ``main``."""
+
+    def items(self):
+        return enumerate(self)
+
+
+def _cmd_history(args) -> list:
+    from .history import history, validate_torques
+
+    torques = validate_torques("--turning-points", args.turning_points)
+    states = history(torques, method=args.method, n_terms=args.n_terms)
+    out = _StateList()
+    for state in states:
+        record = state.as_dict()
+        if args.radii is not None:
+            radii = np.asarray(args.radii, dtype=float)
+            record["radii"] = radii.tolist()
+            record["traction"] = [_json_number(float(v)) for v in state.traction(radii)]
+            record["slip"] = [_json_number(float(v)) for v in state.slip(radii)]
+            record["residual_traction"] = [_json_number(float(v)) for v in state.residual_traction(radii)]
+        out.append(record)
+    return out
+
+
+class _RecordList(list):
+    """A JSON list of records; ``items()`` numbers them for the plain-text output of ``main``."""
+
+    def items(self):
+        return enumerate(self)
+
+
+_MAX_REFERENCE_DIGITS = 1000
+
+
+def _cmd_reference(args) -> dict:
+    import mpmath
+
+    from . import validation
+    from .reference import solve_reference
+
+    text = args.stick_radius
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"--stick-radius must be a real number in (0, 1), got {text!r}") from None
+    value = validation.real_number("--stick-radius", value)
+    if not 0.0 < value < 1.0:
+        raise ValueError(f"--stick-radius must lie in (0, 1) (open: the reference solves partial slip), got {text!r}")
+    digits = validation.positive_int("--digits", args.digits)
+    if digits > _MAX_REFERENCE_DIGITS:
+        raise ValueError(f"--digits must lie in [1, {_MAX_REFERENCE_DIGITS}], got {digits}")
+    n_terms = validation.positive_int("--n-terms", args.n_terms)
+    method = validation.choice("--method", args.method, METHODS)
+    solution = solve_reference(text, method, n_terms, digits)
+    with mpmath.workdps(digits):
+        torque = mpmath.nstr(solution.torque, digits, strip_zeros=False)
+        omega = solution.rigid_rotation
+        omega = None if omega is None else mpmath.nstr(omega, digits, strip_zeros=False)
+    return {
+        "stick_radius": text,
+        "torque": torque,
+        "rigid_rotation": omega,
+        "digits": digits,
+        "n_terms": n_terms,
+        "method": method,
+        "backend": solution.backend,
+        "seconds": round(sum(solution.seconds.values()), 6),
+    }
+
+
+def _cmd_errata(args) -> list:
+    from .errata import errata_table
+
+    return _RecordList(errata_table())
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog=PROG, description="Frictional torsional contact of flat-ended cylinders.")
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
@@ -66,6 +143,23 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
+    p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
+    p.add_argument("--turning-points", type=float, nargs="+", required=True, help="T* after each step, in [-4/3, 4/3]")
+    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
+    p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
+    p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
+    p.add_argument("--json", action="store_true", help="print a JSON list, one state per turning point")
+    p.set_defaults(handler=_cmd_history)
+    p = sub.add_parser("reference", help="high-precision (mpmath) solution of the truncated system")
+    p.add_argument("--stick-radius", required=True, help="b/a in (0, 1), read as a decimal")
+    p.add_argument("--n-terms", type=int, default=145, help="number of eigenfunctions (default 145)")
+    p.add_argument("--digits", type=int, default=50, help="significant digits (default 50)")
+    p.add_argument("--method", default="complete", help=f"one of {', '.join(METHODS)} (default complete)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_cmd_reference)
+    p = sub.add_parser("errata", help="computed verdicts on the paper's equations and statements")
+    p.add_argument("--json", action="store_true", help="print a JSON list, one object per checked statement")
+    p.set_defaults(handler=_cmd_errata)
     return parser
 
 

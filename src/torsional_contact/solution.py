@@ -89,7 +89,11 @@ class Solution:
 
     def traction(self, r):
         """Interface shear traction sigma_zt(r, 0) / (f p0), eq. (8), (26)."""
-        return self.stress(r, 0.0)[0]
+        r = validation.coordinates(r)
+        if self.regime == "stick":
+            return (self.torque * r).astype(float)
+        lam = self.series.eigenvalues
+        return self.sign * (self.series.torque * r - self._sum(1, lam, r, 0.0))
 
     def slip(self, r):
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (0 on the stick disc up to the series error)."""

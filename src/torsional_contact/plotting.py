@@ -1,0 +1,30 @@
+"""Figure output for the workflow: vector PDF plus PNG preview, written atomically."""
+
+from __future__ import annotations
+
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from .output import atomic_path  # noqa: E402
+
+__all__ = ["use_style", "save_figure", "plt"]
+
+
+def use_style(style_path=None) -> None:
+    """Apply the project's matplotlib style file (an input of every figure rule)."""
+    if style_path:
+        plt.style.use(os.fspath(style_path))
+
+
+def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
+    """Save ``fig`` as PDF (and PNG) atomically, with the generating script in the metadata."""
+    with atomic_path(pdf_path) as tmp:
+        fig.savefig(tmp, format="pdf", metadata={"Creator": "torsional_contact workflow"})
+    if png_path:
+        with atomic_path(png_path) as tmp:
+            fig.savefig(tmp, format="png", dpi=dpi)
+    plt.close(fig)

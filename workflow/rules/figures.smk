@@ -1,0 +1,127 @@
+# One rule per figure; each calls one script in workflow/scripts/.
+
+
+rule fig2_contours:
+    input:
+        script="workflow/scripts/fig2_contours.py",
+        style=STYLE,
+        lib=LIB,
+    output:
+        **fig("fig2_{quantity}"),
+    params:
+        b=config["contours"]["stick_radius"],
+        n=config["n_terms"],
+        method=config["method"],
+        nr=config["contours"]["nr"],
+        nz=config["contours"]["nz"],
+        z_max=config["contours"]["z_max"],
+        tol=config["contours"]["tolerance"],
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --quantity {wildcards.quantity} --stick-radius {params.b} --method {params.method}"
+        " --n-terms {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig3_torque_curve:
+    input:
+        script="workflow/scripts/fig3_torque_curve.py",
+        style=STYLE,
+        lib=LIB,
+    output:
+        **fig("fig3_torque_curve"),
+        csv=f"{OUT}/data/torque_curve.csv",
+    params:
+        n=config["n_terms"],
+        ref=config["torque_curve"]["reference_n_terms"],
+        n_radii=config["torque_curve"]["n_radii"],
+    resources:
+        runtime=10,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --n-terms {params.n} --reference-n-terms {params.ref} --n-radii {params.n_radii}"
+        " --style {input.style} --csv {output.csv} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig4_interface:
+    input:
+        script="workflow/scripts/fig4_interface.py",
+        style=STYLE,
+        lib=LIB,
+    output:
+        **fig("fig4_{quantity}"),
+    params:
+        radii=config["interface"]["stick_radii"],
+        n=config["n_terms"],
+        method=config["method"],
+        points=config["interface"]["n_points"],
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --quantity {wildcards.quantity} --stick-radii {params.radii} --method {params.method}"
+        " --n-terms {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig_published_vs_complete:
+    input:
+        script="workflow/scripts/fig_published_vs_complete.py",
+        style=STYLE,
+        lib=LIB,
+    output:
+        **fig("published_vs_complete"),
+    params:
+        b=config["comparison"]["stick_radius"],
+        n=config["n_terms"],
+    resources:
+        runtime=5,
+        mem_mb=500,
+    shell:
+        "python {input.script} --stick-radius {params.b} --n-terms {params.n}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig_von_mises:
+    input:
+        script="workflow/scripts/fig_von_mises.py",
+        style=STYLE,
+        lib=LIB,
+    output:
+        **fig("von_mises"),
+    params:
+        friction=config["von_mises"]["friction"],
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --friction {params.friction} --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig5_cyclic:
+    input:
+        script="workflow/scripts/fig5_cyclic.py",
+        style=STYLE,
+        data=f"{OUT}/data/history.json",
+    output:
+        **fig("fig5_cyclic"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig_hysteresis:
+    input:
+        script="workflow/scripts/fig_hysteresis.py",
+        style=STYLE,
+        data=f"{OUT}/data/history.json",
+    output:
+        **fig("hysteresis"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"

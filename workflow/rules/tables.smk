@@ -1,0 +1,57 @@
+# Tables and the numbers quoted in the manuscript (as LaTeX macros).
+
+
+rule torque_table:
+    input:
+        script="workflow/scripts/torque_table.py",
+        lib=LIB,
+    output:
+        csv=f"{OUT}/data/torque_table.csv",
+        tex=f"{OUT}/tables/torque_table.tex",
+        macros=f"{OUT}/macros/torque_table.tex",
+    params:
+        radii=config["torque_table"]["stick_radii"],
+        n=config["n_terms"],
+        ref=config["torque_table"]["reference_n_terms"],
+    resources:
+        runtime=10,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --stick-radii {params.radii} --n-terms {params.n} --reference-n-terms {params.ref}"
+        " --csv {output.csv} --tex {output.tex} --macros {output.macros}"
+
+
+rule convergence_table:
+    input:
+        script="workflow/scripts/convergence_table.py",
+        lib=LIB,
+    output:
+        json=f"{OUT}/data/convergence_n_terms.json",
+        macros=f"{OUT}/macros/convergence.tex",
+    params:
+        b=config["convergence"]["stick_radius"],
+        n=config["convergence"]["max_n_terms"],
+    resources:
+        runtime=10,
+        mem_mb=3000,
+    shell:
+        "python {input.script} --stick-radius {params.b} --max-n {params.n} --json {output.json} --macros {output.macros}"
+
+
+rule history_data:
+    input:
+        script="workflow/scripts/history_data.py",
+        lib=LIB,
+    output:
+        json=f"{OUT}/data/history.json",
+        macros=f"{OUT}/macros/history.tex",
+    params:
+        n=config["history"]["n_terms"],
+        fit_n=config["history"]["fit_n_terms"],
+        points=config["history"]["n_points"],
+    resources:
+        runtime=10,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --n-terms {params.n} --fit-n-terms {params.fit_n} --n-points {params.points}"
+        " --json {output.json} --macros {output.macros}"

@@ -1,0 +1,29 @@
+"""Macros describing the build itself (configuration, versions, machine) for the manuscript."""
+
+import argparse
+import os
+import platform
+from importlib import metadata
+
+from torsional_contact.output import latex_escape, write_macros
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--n-terms", type=int, required=True)
+    p.add_argument("--method", required=True)
+    p.add_argument("--outdir", required=True)
+    p.add_argument("--output", required=True)
+    a = p.parse_args()
+    versions = {name: metadata.version(name) for name in ("numpy", "scipy", "mpmath", "matplotlib", "snakemake")}
+    write_macros(a.output, {
+        "n-terms": a.n_terms,
+        "figure-method": latex_escape(a.method),
+        "python-version": platform.python_version(),
+        **{f"version-{k}": latex_escape(v) for k, v in versions.items()},
+        "machine": latex_escape(f"{platform.system()} {platform.machine()}, {os.cpu_count()} cores"),
+    }, "workflow/scripts/build_macros.py")
+
+
+if __name__ == "__main__":
+    main()

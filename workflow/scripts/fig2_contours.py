@@ -1,0 +1,64 @@
+"""Fig. 2a-c: contours of sigma_zt, sigma_rt (units f p0) and u_theta (f p0 a / mu) for one b/a.
+
+Computes only what the plot needs: fields on an (r, z) grid with the per-point series
+truncated at the plot tolerance (default 1e-4 of f p0).
+"""
+
+import argparse
+
+import numpy as np
+
+from torsional_contact import solve
+from torsional_contact.plotting import plt, save_figure, use_style
+
+LABELS = {
+    "sigma_zt": r"$\sigma_{\theta z}/f p_0$",
+    "sigma_rt": r"$\sigma_{r\theta}/f p_0$",
+    "u_theta": r"$u_\theta\,\mu/(f p_0 a)$",
+}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--quantity", choices=sorted(LABELS), required=True)
+    p.add_argument("--stick-radius", type=float, required=True)
+    p.add_argument("--method", default=None)
+    p.add_argument("--n-terms", type=int, default=None)
+    p.add_argument("--nr", type=int, default=121)
+    p.add_argument("--nz", type=int, default=101)
+    p.add_argument("--z-max", type=float, default=1.0)
+    p.add_argument("--tolerance", type=float, default=1e-4)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+
+    s = solve(stick_radius=a.stick_radius, method=a.method, n_terms=a.n_terms)
+    object.__setattr__(s, "tolerance", a.tolerance)  # plot accuracy, not table accuracy
+    r = np.linspace(0.0, 1.0, a.nr)
+    z = np.linspace(0.0, a.z_max, a.nz)
+    rr, zz = np.meshgrid(r, z)
+    if a.quantity == "u_theta":
+        values = s.displacement(rr, zz)
+    else:
+        values = s.stress(rr, zz)[0 if a.quantity == "sigma_zt" else 1]
+
+    use_style(a.style)
+    fig, ax = plt.subplots(figsize=(4.2, 3.6))
+    levels = 21
+    filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
+    ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)
+    ax.axvline(a.stick_radius, color="w", ls="--", lw=0.8)
+    ax.text(a.stick_radius / 2, 0.03 * a.z_max, "stick", color="w", ha="center", va="bottom")
+    ax.text((1 + a.stick_radius) / 2, 0.03 * a.z_max, "slip", color="w", ha="center", va="bottom")
+    ax.set_xlabel(r"$r/a$")
+    ax.set_ylabel(r"$z/a$")
+    ax.set_title(f"{LABELS[a.quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$\n"
+                 f"({s.method} formulation, N = {s.n_terms})")
+    fig.colorbar(filled, ax=ax, label=LABELS[a.quantity])
+    ax.grid(False)
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,52 @@
+"""Fig. 4a-c: interface traction sigma_zt(r,0), sigma_rt(r,0) (units f p0) and slip
+(units f p0 a / mu) for several b/a."""
+
+import argparse
+
+import numpy as np
+
+from torsional_contact import solve
+from torsional_contact.plotting import plt, save_figure, use_style
+
+LABELS = {
+    "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",
+    "sigma_rt": r"$\sigma_{r\theta}(r,0)/f p_0$",
+    "slip": r"slip $s\,\mu/(f p_0 a)$",
+}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--quantity", choices=sorted(LABELS), required=True)
+    p.add_argument("--stick-radii", type=float, nargs="+", required=True)
+    p.add_argument("--method", default=None)
+    p.add_argument("--n-terms", type=int, default=None)
+    p.add_argument("--n-points", type=int, default=801)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+
+    r = np.linspace(0.0, 1.0, a.n_points)
+    use_style(a.style)
+    fig, ax = plt.subplots()
+    for b in a.stick_radii:
+        s = solve(stick_radius=b, method=a.method, n_terms=a.n_terms)
+        if a.quantity == "traction":
+            y = s.traction(r)
+        elif a.quantity == "sigma_rt":
+            y = s.stress(r, 0.0)[1]
+        else:
+            y = s.slip(r)
+        ax.plot(r, y, label=f"$b/a = {b:g}$, $T^* = {s.torque:.4f}$")
+    if a.quantity == "traction":
+        ax.axhline(1.0, color="0.5", lw=0.8)
+    ax.set_xlabel(r"$r/a$")
+    ax.set_ylabel(LABELS[a.quantity])
+    ax.set_xlim(0, 1)
+    ax.legend(title=f"{s.method}, N = {s.n_terms}")
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

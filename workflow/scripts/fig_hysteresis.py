@@ -1,0 +1,46 @@
+"""Oscillating torque: hysteresis loops T* against omega, dissipation per cycle against the
+torque range (with the threshold law), and the torsional compliance d omega / d T*.
+
+Units: omega in f p0 / mu; energy per cycle in (f p0)^2 a^3 / mu.  Reads the history data.
+"""
+
+import argparse
+import json
+
+from torsional_contact.plotting import plt, save_figure, use_style
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--data", required=True)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+    with open(a.data) as handle:
+        data = json.load(handle)
+    use_style(a.style)
+    fig, (loops, law, compliance) = plt.subplots(1, 3, figsize=(10.5, 3.2))
+    for loop in data["loops"]:
+        loops.plot(loop["rigid_rotation"], loop["torque"], label=f"$[{loop['t_min']:g}, {loop['t_max']:g}]$")
+    loops.set_xlabel(r"rigid rotation $\omega\mu/f p_0$")
+    loops.set_ylabel(r"$T^*$")
+    loops.legend(title=r"$T^*$ range", fontsize=7, loc="lower right")
+    d = data["dissipation_law"]
+    law.loglog(d["eps"], d["dissipation"], "o", label="memory rules")
+    law.loglog(d["eps"], d["asymptote"], "-", label=r"$(\pi^4/3)\,\epsilon^3$")
+    law.set_xlabel(r"$\epsilon = \Delta T^*/2 - 1$")
+    law.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
+    law.legend(title=f"fitted exponent {d['fitted_exponent']:.2f}")
+    c = data["compliance"]
+    compliance.semilogy(c["torque"], c["d_omega_d_torque"], "o-", label="first loading")
+    compliance.semilogy(c["torque"], c["asymptote"], "--", label=r"$(\pi^3/4)(T^*-1)^2$")
+    compliance.set_xlabel(r"$T^*$")
+    compliance.set_ylabel(r"$d\omega/dT^*$")
+    compliance.legend()
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,48 @@
+"""Published eq. (38) against the complete formulation: slip and traction at one b/a.
+
+Left: slip s(r) (units f p0 a / mu); right: traction sigma_zt(r, 0) (units f p0).  The
+published solution slips backwards on the stick disc (u = alpha r, alpha < 0) and
+carries traction 1 - alpha r > 1 on the slip annulus (see formulations docstring).
+"""
+
+import argparse
+
+import numpy as np
+
+from torsional_contact import solve
+from torsional_contact.plotting import plt, save_figure, use_style
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--stick-radius", type=float, required=True)
+    p.add_argument("--n-terms", type=int, required=True)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+
+    r = np.linspace(0, 1, 1001)
+    use_style(a.style)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(7.0, 3.0))
+    for method, style in (("complete", "-"), ("published", "--")):
+        s = solve(stick_radius=a.stick_radius, method=method, n_terms=a.n_terms)
+        label = f"{method}: $T^* = {s.torque:.4f}$"
+        left.plot(r, s.slip(r), style, label=label)
+        right.plot(r, s.traction(r), style, label=label)
+    for ax in (left, right):
+        ax.axvline(a.stick_radius, color="0.5", lw=0.8)
+        ax.set_xlabel(r"$r/a$")
+        ax.set_xlim(0, 1)
+    left.axhline(0, color="k", lw=0.6)
+    right.axhline(1, color="k", lw=0.6)
+    left.set_ylabel(r"slip $s\,\mu/(f p_0 a)$")
+    right.set_ylabel(r"$\sigma_{\theta z}(r,0)/f p_0$")
+    right.set_ylim(0.6 * a.stick_radius, 1.08)
+    right.set_xlim(0.5 * a.stick_radius, 1)
+    left.legend(title=f"$b/a = {a.stick_radius:g}$, N = {a.n_terms}")
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

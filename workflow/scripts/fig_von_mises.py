@@ -1,0 +1,42 @@
+"""Design map: von Mises onset of plastic flow (eq. 6) against slip onset (eq. 5) and spinning.
+
+Axes: normal stress F/(pi a^2 k) and torsional stress 2T/(pi a^3 k) (k: yield stress in
+shear).  Slip starts on tau = f sigma (T* = 1), the cylinders spin on tau = 4 f sigma / 3
+(T* = 4/3); yield (eq. 6) is the ellipse tau^2 + sigma^2 / 3 = 1.
+"""
+
+import argparse
+
+import numpy as np
+
+from torsional_contact.criteria import von_mises_torque_limit
+from torsional_contact.plotting import plt, save_figure, use_style
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--friction", type=float, nargs="+", required=True)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+
+    sigma = np.linspace(0, np.sqrt(3), 400)  # F / (pi a^2 k)
+    normal_force = np.pi * sigma  # with a = k = 1
+    tau_yield = 2 * von_mises_torque_limit(normal_force, 1.0, 1.0) / np.pi  # 2T/(pi a^3 k)
+    use_style(a.style)
+    fig, ax = plt.subplots(figsize=(6.2, 3.4))
+    ax.plot(sigma, tau_yield, "k", lw=1.8, label="von Mises onset, eq. (6)")
+    for f, color in zip(a.friction, plt.rcParams["axes.prop_cycle"].by_key()["color"], strict=False):
+        ax.plot(sigma, f * sigma, color=color, label=f"slip onset $T^*=1$, $f = {f:g}$")
+        ax.plot(sigma, 4 * f * sigma / 3, "--", color=color, label=f"spinning $T^*=4/3$, $f = {f:g}$")
+    ax.set_xlim(0, 1.8)
+    ax.set_ylim(0, 1.1)
+    ax.set_xlabel(r"$F/(\pi a^2 k)$")
+    ax.set_ylabel(r"$2T/(\pi a^3 k)$")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()
