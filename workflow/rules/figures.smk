@@ -5,7 +5,7 @@ rule fig2_contours:
     input:
         script="workflow/scripts/fig2_contours.py",
         style=STYLE,
-        lib=LIB,
+        lib=lib("workflow/scripts/fig2_contours.py"),
     output:
         **fig("fig2_{quantity}"),
     params:
@@ -29,7 +29,7 @@ rule fig3_torque_curve:
     input:
         script="workflow/scripts/fig3_torque_curve.py",
         style=STYLE,
-        lib=LIB,
+        lib=lib("workflow/scripts/fig3_torque_curve.py"),
     output:
         **fig("fig3_torque_curve"),
         csv=f"{OUT}/data/torque_curve.csv",
@@ -49,7 +49,7 @@ rule fig4_interface:
     input:
         script="workflow/scripts/fig4_interface.py",
         style=STYLE,
-        lib=LIB,
+        lib=lib("workflow/scripts/fig4_interface.py"),
     output:
         **fig("fig4_{quantity}"),
     params:
@@ -69,7 +69,7 @@ rule fig_published_vs_complete:
     input:
         script="workflow/scripts/fig_published_vs_complete.py",
         style=STYLE,
-        lib=LIB,
+        lib=lib("workflow/scripts/fig_published_vs_complete.py"),
     output:
         **fig("published_vs_complete"),
     params:
@@ -87,7 +87,7 @@ rule fig_von_mises:
     input:
         script="workflow/scripts/fig_von_mises.py",
         style=STYLE,
-        lib=LIB,
+        lib=lib("workflow/scripts/fig_von_mises.py"),
     output:
         **fig("von_mises"),
     params:

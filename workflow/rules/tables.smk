@@ -4,7 +4,7 @@
 rule torque_table:
     input:
         script="workflow/scripts/torque_table.py",
-        lib=LIB,
+        lib=lib("workflow/scripts/torque_table.py"),
     output:
         csv=f"{OUT}/data/torque_table.csv",
         tex=f"{OUT}/tables/torque_table.tex",
@@ -24,7 +24,7 @@ rule torque_table:
 rule convergence_table:
     input:
         script="workflow/scripts/convergence_table.py",
-        lib=LIB,
+        lib=lib("workflow/scripts/convergence_table.py"),
     output:
         json=f"{OUT}/data/convergence_n_terms.json",
         macros=f"{OUT}/macros/convergence.tex",
@@ -41,7 +41,7 @@ rule convergence_table:
 rule history_data:
     input:
         script="workflow/scripts/history_data.py",
-        lib=LIB,
+        lib=lib("workflow/scripts/history_data.py"),
     output:
         json=f"{OUT}/data/history.json",
         macros=f"{OUT}/macros/history.tex",
