@@ -86,3 +86,14 @@ def test_schema_rejects_a_bad_configuration(tmp_path):
     bad.write_text((ROOT / TEST_CONFIG).read_text().replace("n_terms: 60", "n_terms: -3"))
     run = snakemake("--configfile", str(bad), "-n", check=False)
     assert run.returncode != 0 and "n_terms" in (run.stdout + run.stderr)
+
+
+@pytest.mark.parametrize("notebook", sorted(p.name for p in (ROOT / "notebooks").glob("*.py")))
+def test_notebooks_run_on_the_test_results(built, notebook, monkeypatch):
+    jupytext = pytest.importorskip("jupytext")
+    nbclient = pytest.importorskip("nbclient")
+    monkeypatch.setenv("RESULTS_DIR", str(built))
+    nb = jupytext.read(ROOT / "notebooks" / notebook)
+    client = nbclient.NotebookClient(nb, kernel_name="python3", timeout=300,
+                                     resources={"metadata": {"path": str(ROOT / "notebooks")}})
+    client.execute()  # raises CellExecutionError on any failing cell

@@ -1,0 +1,87 @@
+# ---
+# jupyter:
+#   jupytext:
+#     formats: py:percent
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+#   kernelspec:
+#     display_name: Python 3
+#     language: python
+#     name: python3
+# ---
+
+# %% [markdown]
+# # Exploring T*(b), the interface fields and the unloading experiment
+#
+# This notebook reads the workflow's results (it recomputes nothing heavy). Build them with
+# `bash workflow/main.sh` (default configuration, `results/`) or set `RESULTS_DIR` to another
+# output folder, e.g. `results/ci` from the test configuration. Units: T* = 2T/(f F a),
+# traction in f p0, slip in f p0 a / mu, omega in f p0 / mu.
+
+# %%
+import io
+import json
+import os
+from pathlib import Path
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+RESULTS = Path(os.environ.get("RESULTS_DIR", "../results"))
+if not RESULTS.is_absolute() and not RESULTS.exists():
+    RESULTS = Path.cwd().parent / RESULTS
+print("reading", RESULTS.resolve())
+
+
+def read_csv(path):
+    """A CSV of the workflow: '#' metadata lines, then a header and rows."""
+    lines = Path(path).read_text().splitlines()
+    meta = [line for line in lines if line.startswith("#")]
+    data = [line for line in lines if not line.startswith("#")]
+    return np.genfromtxt(io.StringIO("\n".join(data)), delimiter=",", names=True), meta
+
+# %% [markdown]
+# ## T*(b): complete against published formulation
+# The CSV carries its metadata as comment lines.
+
+# %%
+path = RESULTS / "data" / "torque_curve.csv"
+curve, meta = read_csv(path)
+print("\n".join(meta))
+fig, ax = plt.subplots()
+ax.plot(curve["torque_complete"], curve["stick_radius"], label="complete")
+ax.plot(curve["torque_published"], curve["stick_radius"], ":", label="published eq. (38)")
+ax.axvline(4 / 3, color="0.5")
+ax.set_xlabel("$T^*$")
+ax.set_ylabel("$b/a$")
+ax.legend()
+over = curve["stick_radius"][curve["torque_published"] > 4 / 3]
+print(f"published T* exceeds 4/3 for b/a < {over.max():.3f}" if over.size else "published T* stays below 4/3")
+
+# %% [markdown]
+# ## Table of T*(b) and omega(b) at two truncations
+
+# %%
+table, _ = read_csv(RESULTS / "data" / "torque_table.csv")
+for row in np.atleast_1d(table):
+    print(f"b/a = {row['stick_radius']:.2f}: T* = {row['torque_complete']:.6f} (N coarse), "
+          f"{row['torque_complete_fine']:.6f} (N fine), published {row['torque_published']:.6f}")
+assert np.all(np.diff(np.atleast_1d(table["torque_complete"])) < 0), "T*(b) must decrease with b"
+
+# %% [markdown]
+# ## Unloading after T* = 1.23 (Fig. 5) and the dissipation law
+
+# %%
+hist = json.loads((RESULTS / "data" / "history.json").read_text())
+f5 = hist["fig5"]
+r = np.array(f5["radii"])
+fig, ax = plt.subplots()
+for torque, traction in zip(f5["stages"], f5["traction"], strict=True):
+    ax.plot(r, traction, label=f"T* = {torque:g}")
+ax.set_xlabel("r/a")
+ax.set_ylabel("traction / f p0")
+ax.legend(ncol=2)
+print("residual traction peak", f5["residual_peak"], "; reverse slip onset at T* =", f5["reverse_slip_onset"])
+law = hist["dissipation_law"]
+print(f"dissipation ~ eps^{law['fitted_exponent']:.2f} (predicted 3)")
