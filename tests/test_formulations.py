@@ -128,3 +128,16 @@ class TestPublishedDefect:
             s = solve(stick_radius=0.3, method="published", n_terms=145)
         assert s.torque > 4 / 3
         assert self.pub.torque - self.com.torque > 0.02
+
+
+@pytest.mark.parametrize("b", [0.2, 0.6, 0.9])
+def test_slip_never_raises_the_shear_above_the_bilateral_maximum(b):
+    # Section 4: 'the presence of slip simply reduces the severity of the state of stress', so
+    # the von Mises limit (6) of the monolithic shaft (shear T* f p0 at r = a) also holds here.
+    s = solve(stick_radius=b, n_terms=600)
+    r = np.linspace(0, 1, 401)[:, None]
+    z = np.concatenate([[0.0, 1e-4, 1e-3], np.linspace(0.005, 1.5, 120)])[None, :]
+    sigma_zt, sigma_rt = s.stress(r, z)
+    resultant = np.hypot(sigma_zt, sigma_rt)
+    assert resultant.max() <= s.torque * (1 + 1e-9)
+    assert resultant.max() > s.torque * (1 - 1e-3)  # attained far from the interface, at r = a

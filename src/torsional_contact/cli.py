@@ -52,19 +52,12 @@ def _cmd_solve(args) -> dict:
     return out
 
 
-class _StateList(list):
-    """A JSON list of states; ``items()`` numbers them for the plain-text output of ``main``."""
-
-    def items(self):
-        return enumerate(self)
-
-
 def _cmd_history(args) -> list:
     from .history import history, validate_torques
 
     torques = validate_torques("--turning-points", args.turning_points)
     states = history(torques, method=args.method, n_terms=args.n_terms)
-    out = _StateList()
+    out = []
     for state in states:
         record = state.as_dict()
         if args.radii is not None:
@@ -75,13 +68,6 @@ def _cmd_history(args) -> list:
             record["residual_traction"] = [_json_number(float(v)) for v in state.residual_traction(radii)]
         out.append(record)
     return out
-
-
-class _RecordList(list):
-    """A JSON list of records; ``items()`` numbers them for the plain-text output of ``main``."""
-
-    def items(self):
-        return enumerate(self)
 
 
 _MAX_REFERENCE_DIGITS = 1000
@@ -126,7 +112,7 @@ def _cmd_reference(args) -> dict:
 def _cmd_errata(args) -> list:
     from .errata import errata_table
 
-    return _RecordList(errata_table())
+    return errata_table()
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -178,6 +164,9 @@ def main(argv=None) -> int:
         return 2
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
+    elif isinstance(result, list):  # one record per line
+        for record in result:
+            print(json.dumps(record, allow_nan=False))
     else:
         for key, value in result.items():
             print(f"{key}: {value}")

@@ -50,7 +50,8 @@ T* L_m - K_m = B_m.
   (uses int_b^1 r^2 J1(lam_n r) dr = -S_n).  Since {r} U {J1(lam_n r)} is complete
   on (0, 1), R -> 0 as N grows; in the published system R keeps an uncontrolled
   component along r, i.e. the published solution satisfies u = alpha r on the
-  stick disc (a rigid slip) and traction 1 + alpha r on the slip annulus.
+  stick disc (a rigid slip) and traction 1 - alpha r on the slip annulus (alpha < 0:
+  the stick disc slips backwards and the slip-zone traction exceeds the friction limit).
 
 Regularity: fixing T* for a given b
 -----------------------------------

@@ -7,8 +7,8 @@ FIGURES = (
     + [f"{OUT}/figures/published_vs_complete.pdf", f"{OUT}/figures/von_mises.pdf"]
     + [f"{OUT}/figures/fig5_cyclic.pdf", f"{OUT}/figures/hysteresis.pdf"]
 )
-TABLES = [f"{OUT}/tables/torque_table.tex"]
-MACROS = [f"{OUT}/macros/torque_table.tex", f"{OUT}/macros/convergence.tex", f"{OUT}/macros/build.tex", f"{OUT}/macros/history.tex"]
+TABLES = [f"{OUT}/tables/torque_table.tex", f"{OUT}/tables/errata_table.tex"]
+MACROS = [f"{OUT}/macros/torque_table.tex", f"{OUT}/macros/convergence.tex", f"{OUT}/macros/build.tex", f"{OUT}/macros/history.tex", f"{OUT}/macros/errata.tex"]
 
 
 rule build_macros:

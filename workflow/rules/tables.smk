@@ -55,3 +55,41 @@ rule history_data:
     shell:
         "python {input.script} --n-terms {params.n} --fit-n-terms {params.fit_n} --n-points {params.points}"
         " --json {output.json} --macros {output.macros}"
+
+
+rule errata_report:
+    input:
+        script="workflow/scripts/errata_report.py",
+        lib=lib("workflow/scripts/errata_report.py"),
+    output:
+        json=f"{OUT}/errata/errata.json",
+        md=f"{OUT}/errata/errata.md",
+        complete=f"{OUT}/errata/reference_complete.json",
+        published=f"{OUT}/errata/reference_published.json",
+    params:
+        radii=config["reference"]["stick_radii"],
+        n=config["reference"]["n_terms"],
+        digits=config["reference"]["digits"],
+        converged=config["reference"]["converged_n_terms"],
+        conditions=config["reference"]["condition_n_terms"],
+        out=f"{OUT}/errata",
+    resources:
+        runtime=20,
+        mem_mb=4000,
+    shell:
+        "OMP_NUM_THREADS=1 python {input.script} --out {params.out} --stick-radii {params.radii} --n-terms {params.n}"
+        " --digits {params.digits} --converged-n-terms {params.converged} --condition-n-terms {params.conditions}"
+
+
+rule errata_tables:
+    input:
+        script="workflow/scripts/errata_tables.py",
+        lib=lib("workflow/scripts/errata_tables.py"),
+        errata=f"{OUT}/errata/errata.json",
+        reference=f"{OUT}/errata/reference_complete.json",
+    output:
+        tex=f"{OUT}/tables/errata_table.tex",
+        macros=f"{OUT}/macros/errata.tex",
+    shell:
+        "python {input.script} --errata {input.errata} --reference {input.reference} --tex {output.tex}"
+        " --macros {output.macros}"

@@ -1,0 +1,233 @@
+"""The high-precision reference (reference.py) against independent computations.
+
+Independent means: mpmath.besseljzero for the zeros, mpmath.quad for the integrals,
+a second precision / a second linear-solve backend for the solve, and a direct
+evaluation of the traction series for the regularity condition.
+"""
+
+import json
+import math
+import subprocess
+import sys
+import warnings
+
+import mpmath
+import numpy as np
+import pytest
+
+from torsional_contact import cli, formulations, integrals, reference
+from torsional_contact.zeros import bessel_j2_zeros
+
+
+def _quad(f, lower, upper, lam_max):
+    """mpmath.quad with breakpoints every half period of the fastest oscillation."""
+    pieces = max(2, int(math.ceil(float(upper - lower) * float(lam_max) / math.pi)))
+    points = [lower + (upper - lower) * mpmath.mpf(k) / pieces for k in range(pieces + 1)]
+    return mpmath.quad(f, points)
+
+
+def test_zeros_match_besseljzero_and_restore_precision():
+    before = mpmath.mp.dps
+    lam = reference.j2_zeros(145, 50)
+    assert mpmath.mp.dps == before
+    with mpmath.workdps(50):
+        for n in (1, 2, 5, 60, 145):
+            assert abs(lam[n - 1] - mpmath.besseljzero(2, n)) < mpmath.mpf(10) ** -48 * lam[n - 1]
+    picked = reference.j2_zeros_at([3, 145], 50)
+    assert picked == (lam[2], lam[144])
+
+
+@pytest.mark.parametrize("lam_index", [1, 7, 40])
+def test_closed_forms_match_quadrature(lam_index):
+    with mpmath.workdps(30):
+        lam = reference.j2_zeros(max(40, lam_index + 1), 30)
+        x, y = lam[lam_index - 1], lam[lam_index]
+        b = mpmath.mpf("0.35")
+        tol = mpmath.mpf(10) ** -25
+        h = _quad(lambda r: mpmath.besselj(1, x * r) ** 2 * r, 0, 1, 2 * x)
+        assert abs(reference.dini_norm(x) - h) < tol * h
+        off = _quad(lambda r: mpmath.besselj(1, x * r) * mpmath.besselj(1, y * r) * r, b, 1, x + y)
+        assert abs(reference.lommel_offdiagonal(x, y, b) - off) < tol * abs(off)
+        diag = _quad(lambda r: mpmath.besselj(1, x * r) ** 2 * r, b, 1, 2 * x)
+        assert abs(reference.lommel_diagonal(x, b) - diag) < tol * diag
+        torque = mpmath.mpf("1.25")
+        load = _quad(lambda r: (torque * r - 1) * mpmath.besselj(1, x * r) * r, b, 1, x)
+        for form in ("hyp1f2", "struve"):
+            assert abs(reference.load_vector(x, b, torque, form) - load) < tol * abs(load)
+
+
+def test_hyp1f2_and_struve_forms_agree_at_large_argument():
+    with mpmath.workdps(40):
+        for x in ("0.5", "37.2", "460.1", "9000.3"):
+            g1 = reference.integral_t_j1_hyp1f2(mpmath.mpf(x))
+            g2 = reference.integral_t_j1_struve(mpmath.mpf(x))
+            assert abs(g1 - g2) < mpmath.mpf(10) ** -35 * abs(g2)
+
+
+def test_assembly_matches_double_precision_assembly():
+    lam = reference.j2_zeros(30, 30)
+    lam_double = bessel_j2_zeros(30)
+    for method in ("published", "complete"):
+        with mpmath.workdps(30):
+            m_mp, rt_mp, rc_mp = reference.assemble(method, lam, mpmath.mpf("0.45"))
+        m_dp, rt_dp, rc_dp = formulations.assemble(method, lam_double, 0.45)
+        m_mp = np.array(m_mp.tolist(), dtype=float)
+        assert np.max(np.abs(m_mp - m_dp)) < 1e-13 * np.max(np.abs(m_dp))
+        assert np.allclose(np.array(rt_mp, dtype=float), rt_dp, rtol=0, atol=1e-14)
+        assert np.allclose(np.array(rc_mp, dtype=float), rc_dp, rtol=0, atol=1e-14)
+    with mpmath.workdps(30):
+        c_mp = np.array(reference.coupling_matrix(lam[:8], mpmath.mpf("0.45")).tolist(), dtype=float)
+    c_dp = integrals.coupling_matrix(lam_double[:8], 0.45)
+    assert np.max(np.abs(c_mp - c_dp)) < 1e-13 * np.max(np.abs(c_dp))
+
+
+@pytest.mark.parametrize("method", ["published", "complete"])
+def test_solution_independent_of_precision_backend_and_form(method):
+    flint_prec = None if reference.flint is None else reference.flint.ctx.prec
+    a = reference.solve_reference(0.6, method, 25, 30)
+    b = reference.solve_reference(0.6, method, 25, 45, backend="mpmath", form="struve")
+    with mpmath.workdps(45):
+        assert abs(a.torque - b.torque) < mpmath.mpf(10) ** -29 * b.torque
+        worst = max(abs(x - y) for x, y in zip(a.amplitudes, b.amplitudes, strict=True))
+        assert worst < mpmath.mpf(10) ** -29 * max(abs(y) for y in b.amplitudes)
+        if method == "complete":
+            assert abs(a.rigid_rotation - b.rigid_rotation) < mpmath.mpf(10) ** -29 * abs(b.rigid_rotation)
+        else:
+            assert a.rigid_rotation is None and b.rigid_rotation is None
+    assert a.solve_bound is not None and a.solve_bound < 1e-40  # rigorous (Arb) bound on the solve
+    assert mpmath.mp.dps == 15
+    assert reference.flint is None or reference.flint.ctx.prec == flint_prec
+
+
+def test_regularity_condition_and_stick_condition_hold():
+    """(v): the traction series equals 1 at r = b; the stick equation holds in the weak sense."""
+    sol = reference.solve_reference("0.5", "complete", 30, 40)
+    with mpmath.workdps(40):
+        b = sol.stick_radius
+        traction = sol.torque * b - mpmath.fsum(
+            c * x * mpmath.besselj(1, x * b) for c, x in zip(sol.amplitudes, sol.eigenvalues, strict=True)
+        )
+        assert abs(traction - 1) < mpmath.mpf(10) ** -35
+
+        # the extra row (iv): int_0^1 R(r) r^2 dr = 0 with R the stick / slip residual, by quadrature
+        def residual(r):
+            series = [c * mpmath.besselj(1, x * r) for c, x in zip(sol.amplitudes, sol.eigenvalues, strict=True)]
+            if r < b:
+                return sol.rigid_rotation * r + mpmath.fsum(series)
+            lam = sol.eigenvalues
+            return mpmath.fsum(s * x for s, x in zip(series, lam, strict=True)) - sol.torque * r + 1
+
+        lam_max = sol.eigenvalues[-1]
+        moment = _quad(lambda r: residual(r) * r * r, 0, b, lam_max) + _quad(
+            lambda r: residual(r) * r * r, b, 1, lam_max
+        )
+        assert abs(moment) < mpmath.mpf(10) ** -30
+
+
+@pytest.mark.parametrize("method", ["published", "complete"])
+@pytest.mark.parametrize("b", [0.3, 0.6, 0.9])
+def test_scipy_agrees_with_reference_to_condition_number(method, b):
+    ref = reference.solve_reference(b, method, 40, 30)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", reference.AccuracyWarning)
+        err = reference.rounding_error(ref)
+    allowed = 100 * np.finfo(float).eps / err["rcond"]
+    assert err["torque"] < allowed
+    assert err["amplitudes"] < allowed
+    if method == "complete":
+        assert err["rigid_rotation"] < allowed
+    assert err["digits_lost"] <= err["predicted_digits_lost"] + 2
+
+
+def test_condition_numbers_small_n():
+    rows = reference.condition_numbers([20, 60], 0.6)
+    assert {(r["n_terms"], r["method"]) for r in rows} == {
+        (20, "published"),
+        (20, "complete"),
+        (60, "published"),
+        (60, "complete"),
+    }
+    for r in rows:
+        assert 1 <= r["equilibrated"] < np.inf and 1 <= r["raw"] < np.inf
+    # independent check of the estimate: exact 1-norm condition number of the raw matrix
+    lam = bessel_j2_zeros(20)
+    matrix, _, _ = formulations.assemble("complete", lam, 0.6)
+    exact = np.linalg.cond(matrix, 1)
+    est = next(r["raw"] for r in rows if r["n_terms"] == 20 and r["method"] == "complete")
+    assert exact / 3 <= est <= exact * 1.0000001
+
+
+def test_write_json_atomic(tmp_path):
+    sols = [reference.solve_reference(0.6, "complete", 10, 25)]
+    path = tmp_path / "ref.json"
+    reference.write_reference_json(path, sols, 1.0)
+    data = json.loads(path.read_text())
+    assert [p.name for p in tmp_path.iterdir()] == ["ref.json"]
+    entry = data["solutions"][0]
+    assert entry["n_terms"] == 10 and entry["digits"] == 25 and entry["method"] == "complete"
+    assert len(entry["torque"].replace(".", "").lstrip("0")) >= 25
+    assert data["versions"]["mpmath"] == mpmath.__version__
+    with mpmath.workdps(25):
+        assert abs(mpmath.mpf(entry["torque"]) - sols[0].torque) < mpmath.mpf(10) ** -24
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="stick_radius"):
+        reference.solve_reference(1.0, "complete", 10, 20)
+    with pytest.raises(ValueError, match="stick_radius"):
+        reference.solve_reference(float("nan"), "complete", 10, 20)
+    with pytest.raises(ValueError, match="method"):
+        reference.solve_reference(0.5, "exact", 10, 20)
+    with pytest.raises(ValueError, match="n_terms"):
+        reference.solve_reference(0.5, "complete", 0, 20)
+
+
+def test_cli_reference_json_subprocess():
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "torsional_contact",
+            "reference",
+            "--stick-radius",
+            "0.6",
+            "--n-terms",
+            "20",
+            "--digits",
+            "30",
+            "--method",
+            "published",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert data["rigid_rotation"] is None and data["method"] == "published"
+    assert data["digits"] == 30 and data["n_terms"] == 20 and data["seconds"] >= 0
+    ref = reference.solve_reference("0.6", "published", 20, 30)
+    with mpmath.workdps(30):
+        assert abs(mpmath.mpf(data["torque"]) - ref.torque) < mpmath.mpf(10) ** -28
+    assert len(data["torque"].replace(".", "").lstrip("0")) == 30
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--stick-radius", "1.5"],
+        ["--stick-radius", "0"],
+        ["--stick-radius", "nan"],
+        ["--stick-radius", "x"],
+        ["--stick-radius", "0.5", "--digits", "0"],
+        ["--stick-radius", "0.5", "--n-terms", "-3"],
+        ["--stick-radius", "0.5", "--method", "exact"],
+        [],
+    ],
+)
+def test_cli_reference_bad_input(args, capsys):
+    assert cli.main(["reference", *args, "--json"]) == 2
+    out = capsys.readouterr()
+    assert out.out == ""
+    assert len(out.err.strip().splitlines()) == 1
