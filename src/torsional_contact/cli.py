@@ -36,20 +36,19 @@ def _json_number(value):
     return value if isinstance(value, float) and math.isfinite(value) else None
 
 
+def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
+    """Add the interface profiles ``fields`` of ``state`` at ``radii`` (JSON: non-finite -> null)."""
+    if radii is not None:
+        radii = np.asarray(radii, dtype=float)
+        record["radii"] = radii.tolist()
+        for name in fields:
+            record[name] = [_json_number(float(v)) for v in getattr(state, name)(radii)]
+    return record
+
+
 def _cmd_solve(args) -> dict:
-    solution = solve(
-        stick_radius=args.stick_radius,
-        torque=args.torque,
-        method=args.method,
-        n_terms=args.n_terms,
-    )
-    out = solution.as_dict()
-    if args.radii is not None:
-        radii = np.asarray(args.radii, dtype=float)
-        out["radii"] = radii.tolist()
-        out["traction"] = [_json_number(float(v)) for v in solution.traction(radii)]
-        out["slip"] = [_json_number(float(v)) for v in solution.slip(radii)]
-    return out
+    solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms)
+    return _profiles(solution.as_dict(), solution, args.radii)
 
 
 def _cmd_history(args) -> list:
@@ -57,17 +56,8 @@ def _cmd_history(args) -> list:
 
     torques = validate_torques("--turning-points", args.turning_points)
     states = history(torques, method=args.method, n_terms=args.n_terms)
-    out = []
-    for state in states:
-        record = state.as_dict()
-        if args.radii is not None:
-            radii = np.asarray(args.radii, dtype=float)
-            record["radii"] = radii.tolist()
-            record["traction"] = [_json_number(float(v)) for v in state.traction(radii)]
-            record["slip"] = [_json_number(float(v)) for v in state.slip(radii)]
-            record["residual_traction"] = [_json_number(float(v)) for v in state.residual_traction(radii)]
-        out.append(record)
-    return out
+    fields = ("traction", "slip", "residual_traction")
+    return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
 
 
 _MAX_REFERENCE_DIGITS = 1000

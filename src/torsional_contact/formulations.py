@@ -88,7 +88,7 @@ from . import integrals
 from .warnings import IllConditioningWarning, ResolutionWarning
 from .zeros import bessel_j2_zeros
 
-__all__ = ["METHODS", "SeriesSolution", "solve_series", "assemble", "resolution_limit"]
+__all__ = ["METHODS", "SeriesSolution", "solve_series", "assemble", "resolution_limit", "equilibrated_solve"]
 
 METHODS = ("published", "complete")
 
@@ -177,7 +177,7 @@ def assemble(method: str, lam: np.ndarray, b: float):
     return full, rhs_torque, rhs_constant
 
 
-def _equilibrated_solve(matrix, rhs):
+def equilibrated_solve(matrix, rhs):
     """LU solve after row and column scaling to unit max-norm; returns (x, rcond)."""
     row = 1.0 / np.max(np.abs(matrix), axis=1)
     scaled = matrix * row[:, None]
@@ -242,7 +242,7 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
             stacklevel=3,
         )
     matrix, rhs_torque, rhs_constant = assemble(method, lam, b)
-    x, rcond = _equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_constant]))
+    x, rcond = equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_constant]))
     if rcond < RCOND_WARN:
         warnings.warn(
             f"the {method} system for stick_radius={b:.6g}, n_terms={n_terms} is "

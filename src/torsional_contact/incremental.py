@@ -57,9 +57,10 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import linalg, optimize, special
+from scipy import optimize, special
 
 from . import integrals
+from .formulations import equilibrated_solve
 from .zeros import bessel_j2_zeros
 
 __all__ = ["MixedSolution", "gauss_legendre_panels", "solve_mixed", "solve_mixed_for_torque"]
@@ -146,16 +147,6 @@ def _data_integrals(func, lam, lower, upper, breakpoints):
     return special.j1(np.outer(lam, nodes)) @ (values * nodes), float(values @ nodes**2)
 
 
-def _equilibrated_solve(matrix, rhs):
-    row = 1.0 / np.max(np.abs(matrix), axis=1)
-    scaled = matrix * row[:, None]
-    col = 1.0 / np.max(np.abs(scaled), axis=0)
-    scaled *= col[None, :]
-    lu, piv = linalg.lu_factor(scaled, check_finite=True)
-    rcond, _ = linalg.lapack.dgecon(lu, np.max(np.sum(np.abs(scaled), axis=0)), norm="1")
-    return linalg.lu_solve((lu, piv), rhs * row[:, None]) * col[:, None], float(rcond)
-
-
 def solve_mixed(
     stick_radius: float,
     displacement: Callable[[np.ndarray], np.ndarray],
@@ -200,7 +191,7 @@ def solve_mixed(
     p_m, p_0 = _data_integrals(traction, lam, c, 1.0, breakpoints)
     rhs_torque = np.append(-stick, (1.0 - c**4) / 4.0)
     rhs_data = np.append(g_m - p_m, g_0 - p_0)
-    x, rcond = _equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_data]))
+    x, rcond = equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_data]))
     weight = lam * special.j1(lam * c)
     p_c = float(np.asarray(traction(np.array([c])), dtype=float)[0])
     torque = (p_c + weight @ x[:n, 1]) / (c - weight @ x[:n, 0])

@@ -695,7 +695,7 @@ def _rcond_1(matrix) -> float:
 
 
 def equilibrate(matrix):
-    """Row then column scaling to unit max-norm, as in ``formulations._equilibrated_solve``."""
+    """Row then column scaling to unit max-norm, as in ``formulations.equilibrated_solve``."""
     scaled = matrix / np.max(np.abs(matrix), axis=1)[:, None]
     return scaled / np.max(np.abs(scaled), axis=0)[None, :]
 
