@@ -5,8 +5,9 @@ radius, the torque T* = 2T/(f F a), the rigid rotation, the regime and the field
 """
 
 from .criteria import GROSS_SLIP_TORQUE, SLIP_ONSET_TORQUE
-from .formulations import METHODS
-from .solution import DEFAULT_METHOD, DEFAULT_N_TERMS, Solution, solve, torque_curve
+from .direct import solve_direct
+from .fast import FastSolution, solve_fast
+from .solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve, torque_curve
 from .warnings import AccuracyWarning, IllConditioningWarning, ResolutionWarning, TruncationWarning
 
 __version__ = "0.1.0"
@@ -15,6 +16,9 @@ __all__ = [
     "solve",
     "Solution",
     "torque_curve",
+    "solve_fast",
+    "FastSolution",
+    "solve_direct",
     "METHODS",
     "DEFAULT_METHOD",
     "DEFAULT_N_TERMS",

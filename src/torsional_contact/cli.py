@@ -15,8 +15,8 @@ import warnings
 import numpy as np
 
 from . import __version__
-from .formulations import METHODS
-from .solution import DEFAULT_N_TERMS, solve
+from .formulations import METHODS as SERIES_METHODS
+from .solution import DEFAULT_N_TERMS, METHODS, solve
 
 __all__ = ["main", "build_parser"]
 
@@ -81,7 +81,7 @@ def _cmd_reference(args) -> dict:
     if digits > _MAX_REFERENCE_DIGITS:
         raise ValueError(f"--digits must lie in [1, {_MAX_REFERENCE_DIGITS}], got {digits}")
     n_terms = validation.positive_int("--n-terms", args.n_terms)
-    method = validation.choice("--method", args.method, METHODS)
+    method = validation.choice("--method", args.method, SERIES_METHODS)
     solution = solve_reference(text, method, n_terms, digits)
     with mpmath.workdps(digits):
         torque = mpmath.nstr(solution.torque, digits, strip_zeros=False)
@@ -130,7 +130,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--stick-radius", required=True, help="b/a in (0, 1), read as a decimal")
     p.add_argument("--n-terms", type=int, default=145, help="number of eigenfunctions (default 145)")
     p.add_argument("--digits", type=int, default=50, help="significant digits (default 50)")
-    p.add_argument("--method", default="complete", help=f"one of {', '.join(METHODS)} (default complete)")
+    p.add_argument("--method", default="complete", help=f"one of {', '.join(SERIES_METHODS)} (default complete)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_reference)
     p = sub.add_parser("errata", help="computed verdicts on the paper's equations and statements")

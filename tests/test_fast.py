@@ -1,0 +1,293 @@
+"""The Abel-Fredholm solver (``fast``) and its kernels (``kernels``).
+
+Every check compares with something computed another way: mpmath quadrature, the Dini
+series of ``formulations`` (the paper's representation), the weak form extrapolated in
+N, physical identities, or the solver at a different resolution.
+"""
+
+import math
+import time
+import warnings
+
+import mpmath
+import numpy as np
+import pytest
+from numpy.polynomial import legendre
+from scipy import special
+
+from torsional_contact import fields, kernels
+from torsional_contact.fast import default_nodes, solve_fast
+from torsional_contact.formulations import solve_series
+from torsional_contact.zeros import bessel_j2_zeros
+
+RADII = (0.02, 0.1, 0.3, 0.5, 0.6, 0.7, 0.9, 0.98)
+
+
+def _gauss(a, b, n):
+    x, w = legendre.leggauss(n)
+    return 0.5 * (b - a) * (x + 1) + a, 0.5 * (b - a) * w
+
+
+def _graded(a, b, toward, n=24, levels=30):
+    """Composite Gauss nodes on [a, b] graded geometrically toward the end ``toward``."""
+    nodes, weights = [], []
+    length = b - a
+    for k in range(levels):
+        lo, hi = length * 2.0 ** -(k + 1), length * 2.0 ** -k
+        if k == levels - 1:
+            lo = 0.0
+        x, w = _gauss(lo, hi, n)
+        nodes.append(a + x if toward == "a" else b - x)
+        weights.append(w)
+    return np.concatenate(nodes), np.concatenate(weights)
+
+
+# -- kernels --------------------------------------------------------------------------
+
+
+def test_torque_rotation_constant_mpmath():
+    mpmath.mp.dps = 25
+    f = lambda x: mpmath.besselk(2, x) * (1 - x**2 / (8 * mpmath.besseli(2, x)))  # noqa: E731
+    beta = mpmath.mpf(1) / 2 + mpmath.quad(f, [0, 1, 4, 16, 48, 80]) / mpmath.pi  # K2(80) ~ 1e-36
+    assert abs(float(beta) - kernels.TORQUE_ROTATION) < 3e-16
+
+
+def test_torque_load_is_a_rigid_rotation():
+    # S^{-1}[int K rho^2] = t sqrt(1 - t^2) + int M rho^2 must equal 2 BETA t for all t
+    t = np.array([1e-3, 0.1, 0.4, 0.7, 0.9, 0.97])
+    xi, w = kernels.xi_grid(0.03)
+    lhs = t * np.sqrt(1 - t * t) + kernels.torque_transform(t, xi, w)
+    np.testing.assert_allclose(lhs / (2 * t), kernels.TORQUE_ROTATION, rtol=0, atol=2e-15)
+
+
+@pytest.mark.parametrize("x", [0.3, 1.9, 7.0, 39.9, 40.1, 120.0, 3000.0])
+def test_integral_x_i1_against_mpmath(x):
+    mpmath.mp.dps = 30
+    exact = mpmath.quad(lambda y: y * mpmath.besseli(1, y), [0, max(0, x - 50), x]) * mpmath.e ** (-x)
+    value = kernels.integral_x_i1_scaled(np.array([x]))[0]
+    assert abs(value / float(exact) - 1) < 2e-15
+
+
+def test_halfspace_kernel_against_abel_form():
+    """G_hs = (2/(pi r rho)) int_0^min t^2 / sqrt((r^2 - t^2)(rho^2 - t^2)) dt (Sneddon)."""
+    mpmath.mp.dps = 25
+    for r, rho in [(0.3, 0.7), (0.5, 0.2), (0.6, 0.601), (0.9, 0.05)]:
+        low, high = min(r, rho), max(r, rho)
+        # t = low sin(phi) removes the inverse square root at t = low
+        def integrand(p, lo=low, hi=high):
+            return (lo * mpmath.sin(p)) ** 2 / mpmath.sqrt(hi**2 - (lo * mpmath.sin(p)) ** 2)
+
+        exact = 2 * mpmath.quad(integrand, [0, mpmath.pi / 2]) / (mpmath.pi * r * rho)
+        assert abs(kernels.halfspace_kernel(r, rho) / float(exact) - 1) < 1e-13
+
+
+@pytest.mark.parametrize("r", [0.2, 0.5, 0.8])
+def test_kernel_reproduces_dini_eigenfunctions(r):
+    """int_0^1 (G_hs + G_c)(r, rho) J1(lam rho) rho drho = J1(lam r) / lam (torque-free)."""
+    lam = bessel_j2_zeros(3)
+    left, wl = _graded(0.0, r, "b")
+    right, wr = _graded(r, 1.0, "a")
+    rho = np.concatenate([left, right])
+    w = np.concatenate([wl, wr])
+    kernel = kernels.halfspace_kernel(r, rho) + kernels.cylinder_kernel(r, rho)
+    moments = (special.j1(np.outer(lam, rho)) * rho * kernel) @ w
+    np.testing.assert_allclose(moments, special.j1(lam * r) / lam, rtol=0, atol=2e-11)
+
+
+def test_kernel_against_dini_series():
+    """(K4): sum_n J1 J1 / (lam h) = G_hs + G_c - 4 BETA r rho at sample points."""
+    lam = bessel_j2_zeros(100_000)
+    h = special.j1(lam) ** 2 / 2
+    for r, rho in [(0.2, 0.5), (0.6, 0.2), (0.7, 0.9), (0.3, 0.8)]:
+        partial = np.cumsum(special.j1(lam * r) * special.j1(lam * rho) / (lam * h))
+        dini = partial[lam.size // 2 :].mean()  # averages out the O(1/N) oscillation
+        closed = kernels.halfspace_kernel(r, rho) + kernels.cylinder_kernel(r, rho)
+        assert abs(dini - (closed - 4 * kernels.TORQUE_ROTATION * r * rho)) < 5e-9
+
+
+def test_spinning_transform_table_against_direct_quadrature():
+    t = np.array([0.05, 0.3, 0.7, 0.95, 0.999, 0.99999])
+    xi, w = kernels.xi_grid(1e-5)
+    direct = kernels.load_transform(t, 1.0, xi, w)
+    np.testing.assert_allclose(kernels.spinning_transform(t), direct, rtol=0, atol=1e-13)
+
+
+# -- convergence ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("b", RADII)
+def test_resolution_convergence(b):
+    n = default_nodes(b)
+    coarse, fine = solve_fast(b), solve_fast(b, 2 * n)
+    assert abs(coarse.torque - fine.torque) < 1e-12
+    assert abs(coarse.rigid_rotation - fine.rigid_rotation) < 1e-12
+    r = np.linspace(0, 1, 301)
+    assert np.max(np.abs(coarse.interface_traction(r) - fine.interface_traction(r))) < 1e-10
+    assert np.max(np.abs(coarse.interface_slip(r) - fine.interface_slip(r))) < 1e-10
+    # the default is not wastefully far from what the error needs
+    half = solve_fast(b, max(4, n // 2))
+    assert abs(half.torque - fine.torque) > 0 or n == 16
+
+
+def test_geometric_convergence_in_nodes():
+    b = 0.9
+    reference = solve_fast(b, 80)
+    errors = [abs(solve_fast(b, n).torque - reference.torque) for n in (6, 10, 14, 18)]
+    assert errors[0] > 1e-6 and errors[-1] < 1e-10
+    assert all(e1 < e0 / 5 for e0, e1 in zip(errors, errors[1:], strict=False))
+
+
+def test_agrees_with_extrapolated_weak_form():
+    """T_N = T + (a + c ln N)/N fitted to the complete weak form at N = 1000..4000."""
+    b = 0.6
+    fast = solve_fast(b)
+    n_values = np.array([1000, 1414, 2000, 2828, 4000])
+    runs = [solve_series(b, "complete", int(n)) for n in n_values]
+    torque = np.array([s.torque for s in runs])
+    omega = np.array([s.rigid_rotation for s in runs])
+    design = np.column_stack([np.ones(n_values.size), 1 / n_values, np.log(n_values) / n_values])
+    t_fit = np.linalg.lstsq(design, torque, rcond=None)[0][0]
+    o_fit = np.linalg.lstsq(design, omega, rcond=None)[0][0]
+    assert abs(t_fit - fast.torque) < 5e-6
+    assert abs(o_fit - fast.rigid_rotation) < 5e-6
+    # and the raw weak-form error decays like ln(N)/N toward the fast value
+    scaled = (torque - fast.torque) * n_values / np.log(n_values)
+    assert np.all(scaled > 0.04) and np.all(scaled < 0.07)
+
+
+@pytest.mark.parametrize("b", [0.3, 0.6, 0.9])
+def test_dini_representation_of_the_solution(b):
+    """omega r + sum c_n J1(lam_n r) (the paper's eq. 25 with the rigid mode) reproduces
+    the Abel interface displacement: zero on the stick disc, slip/2 on the annulus."""
+    fast = solve_fast(b)
+    n_terms = 4000
+    lam = bessel_j2_zeros(n_terms)
+    amplitudes = fast.dini_amplitudes(n_terms)
+    r = np.linspace(0.0, 1.0, 41)
+    r = r[(np.abs(r - b) > 0.02) & (r < 0.98)]  # the series converges slowly at r = b, 1
+    dini = fast.rigid_rotation * r + fields.series_sum(1, lam, amplitudes, r, 0.0, 0.0)
+    np.testing.assert_allclose(dini, fast.interface_displacement(r), rtol=0, atol=2e-9)
+    # the leading amplitudes do not depend on how many are asked for (quadrature converged)
+    assert np.max(np.abs(fast.dini_amplitudes(50) - amplitudes[:50])) < 1e-14
+    weak = solve_series(b, "complete", 2000).amplitudes[:5]
+    np.testing.assert_allclose(weak, amplitudes[:5], rtol=0, atol=5e-4)
+
+
+# -- physics -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("b", RADII)
+def test_interface_conditions_and_identities(b):
+    fast = solve_fast(b)
+    x, w = legendre.leggauss(200)
+    theta, w_theta = np.pi / 4 * (x + 1), np.pi / 4 * w
+    rho, w_rho = b * np.cos(theta), b * np.sin(theta) * w_theta
+    traction = fast.interface_traction(rho)
+    assert np.all(np.abs(traction) <= 1 + 1e-12)
+    # torque balance T* = 4 int q r^2 dr (the stick part by quadrature of eq. F6)
+    assert abs(4 * (w_rho @ (rho**2 * traction) + (1 - b**3) / 3) - fast.torque) < 1e-12
+    # slip annulus: traction 1, slip >= 0, growing like (r - b)^(3/2)
+    r_slip = b + (1 - b) * np.linspace(1e-9, 1, 50)
+    assert np.all(fast.interface_traction(r_slip) == 1.0)
+    slip = fast.interface_slip(r_slip)
+    assert np.all(slip >= 0) and np.all(np.diff(slip) > 0)
+    eps = (1 - b) * np.array([1e-6, 1e-5])
+    ratio = fast.interface_slip(b + eps) / eps**1.5
+    assert abs(ratio[0] / ratio[1] - 1) < 1e-2
+    # stick disc: no slip; traction rises continuously to 1 (no inverse sqrt at r = b)
+    assert np.all(fast.interface_slip(np.linspace(0, b, 20)) == 0)
+    gap = 1 - fast.interface_traction(b * (1 - np.array([1e-12, 1e-8])))
+    assert np.all(gap > 0) and np.all(gap < 1e-3)
+    assert abs(fast.abel_transform(np.array([b]))[0]) < 1e-12  # (F3)
+    # omega = 4 int u r^2 dr = 2 int s r^2 dr (every Dini term is orthogonal to r)
+    # r = b + (1 - b) sin^2(phi) makes (r - b)^(3/2) and sqrt(1 - r) analytic in phi
+    phi, w_phi = np.pi / 4 * (x + 1), np.pi / 4 * w
+    radius = b + (1 - b) * np.sin(phi) ** 2
+    jacobian = (1 - b) * np.sin(2 * phi)
+    integral = 2 * np.sum(w_phi * jacobian * fast.interface_slip(radius) * radius**2)
+    assert abs(integral - fast.rigid_rotation) < 1e-12
+
+
+def test_torque_curve_is_monotone_with_the_right_limits():
+    radii = np.linspace(0.02, 0.98, 49)
+    torque = np.array([solve_fast(b).torque for b in radii])
+    assert np.all(np.diff(torque) < 0)
+    assert 1 < torque[-1] < torque[0] < 4 / 3
+
+
+def test_small_stick_discs():
+    radii = np.geomspace(1e-3, 0.02, 6)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        runs = [solve_fast(b) for b in radii]
+    torque = np.array([s.torque for s in runs])
+    omega = np.array([s.rigid_rotation for s in runs])
+    assert np.all(np.isfinite(torque)) and np.all(np.isfinite(omega))
+    # T* -> 4/3 like b^3 (the stick disc carries O(b^3) less torque than traction 1)
+    deficit = 4 / 3 - torque
+    np.testing.assert_allclose(deficit / radii**3, deficit[0] / radii[0] ** 3, rtol=1e-3)
+    # omega ~ ln(1/b)/2 + const as b -> 0
+    offset = omega - 0.5 * np.log(1 / radii)
+    assert np.ptp(offset) < 1e-4
+    spinning = solve_fast(0.0)
+    assert spinning.torque == 4 / 3 and spinning.rigid_rotation == math.inf
+    assert np.all(spinning.interface_traction([0.0, 0.5, 1.0]) == 1.0)
+    assert spinning.interface_slip(0.5) == math.inf
+    np.testing.assert_allclose(spinning.dini_amplitudes(20), solve_series(0.0, "complete", 20).amplitudes, atol=1e-15)
+
+
+def test_large_stick_discs():
+    radii = 1 - np.geomspace(0.02, 1e-3, 5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        runs = [solve_fast(b) for b in radii]
+    torque = np.array([s.torque for s in runs])
+    assert np.all(np.isfinite(torque)) and np.all(np.diff(torque) < 0)
+    # T* - 1 ~ (1 - b) near slip onset (here ~0.64 (1 - b))
+    slope = (torque - 1) / (1 - radii)
+    assert np.all(np.abs(slope - 0.637) < 0.01)
+    assert np.all([s.rigid_rotation > 0 for s in runs])
+    onset = solve_fast(1.0)
+    assert onset.torque == 1.0 and onset.rigid_rotation == 0.0
+    r = np.linspace(0, 1, 11)
+    assert np.all(onset.interface_traction(r) == r) and np.all(onset.interface_slip(r) == 0)
+    assert np.all(onset.dini_amplitudes(10) == 0)
+
+
+def test_capped_resolution_warns():
+    from torsional_contact.warnings import ResolutionWarning
+
+    with pytest.warns(ResolutionWarning):
+        solve_fast(1 - 1e-9)
+
+
+def test_bad_input():
+    for bad in (-0.1, 1.1, math.nan, math.inf):
+        with pytest.raises(ValueError, match="stick_radius"):
+            solve_fast(bad)
+
+
+def test_speed():
+    timings = []
+    for b in (0.1, 0.6, 0.98):
+        solve_fast(b)
+        samples = []
+        for _ in range(7):
+            start = time.perf_counter()
+            solve_fast(b)
+            samples.append(time.perf_counter() - start)
+        timings.append(np.median(samples))
+    assert max(timings) < 0.025  # ~2 ms on one core; loose for shared machines
+
+
+@pytest.mark.parametrize(("b", "n_basis"), [(0.3, 8), (0.6, 10)])
+def test_agrees_with_direct_collocation(b, n_basis):
+    """A second method: first-kind collocation of u = 0 on the stick disc (``direct``)."""
+    from torsional_contact.direct import solve_direct
+
+    fast, direct = solve_fast(b), solve_direct(b, n_basis)
+    assert direct.residual < 1e-12
+    assert abs(direct.torque - fast.torque) < 1e-11
+    assert abs(direct.rigid_rotation - fast.rigid_rotation) < 2e-11
+    r = np.linspace(0, 1, 101)
+    assert np.max(np.abs(direct.interface_traction(r) - fast.interface_traction(r))) < 5e-11
