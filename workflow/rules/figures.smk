@@ -10,7 +10,7 @@ rule fig2_contours:
         **fig("fig2_{quantity}"),
     params:
         b=config["contours"]["stick_radius"],
-        n=config["n_terms"],
+        n="" if config["method"] == "fast" else f"--n-terms {config['n_terms']}",
         method=config["method"],
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
@@ -21,7 +21,7 @@ rule fig2_contours:
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radius {params.b} --method {params.method}"
-        " --n-terms {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
+        " {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
         " --style {input.style} --pdf {output.pdf} --png {output.png}"
 
 
@@ -35,13 +35,12 @@ rule fig3_torque_curve:
         csv=f"{OUT}/data/torque_curve.csv",
     params:
         n=config["n_terms"],
-        ref=config["torque_curve"]["reference_n_terms"],
         n_radii=config["torque_curve"]["n_radii"],
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
-        "python {input.script} --n-terms {params.n} --reference-n-terms {params.ref} --n-radii {params.n_radii}"
+        "python {input.script} --n-terms {params.n} --n-radii {params.n_radii}"
         " --style {input.style} --csv {output.csv} --pdf {output.pdf} --png {output.png}"
 
 
@@ -54,7 +53,7 @@ rule fig4_interface:
         **fig("fig4_{quantity}"),
     params:
         radii=config["interface"]["stick_radii"],
-        n=config["n_terms"],
+        n="" if config["method"] == "fast" else f"--n-terms {config['n_terms']}",
         method=config["method"],
         points=config["interface"]["n_points"],
     resources:
@@ -62,7 +61,7 @@ rule fig4_interface:
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radii {params.radii} --method {params.method}"
-        " --n-terms {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
 
 
 rule fig_published_vs_complete:
@@ -123,5 +122,27 @@ rule fig_hysteresis:
     resources:
         runtime=2,
         mem_mb=500,
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig_work_precision:
+    input:
+        script="workflow/scripts/fig_work_precision.py",
+        style=STYLE,
+        data=f"{OUT}/data/benchmark_speed_error.json",
+    output:
+        **fig("work_precision"),
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+
+
+rule fig_convergence:
+    input:
+        script="workflow/scripts/fig_convergence.py",
+        style=STYLE,
+        data=f"{OUT}/data/benchmark_speed_error.json",
+    output:
+        **fig("convergence"),
     shell:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"

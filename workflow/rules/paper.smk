@@ -6,9 +6,10 @@ FIGURES = (
     + [f"{OUT}/figures/fig4_{q}.pdf" for q in config["interface"]["quantities"]]
     + [f"{OUT}/figures/published_vs_complete.pdf", f"{OUT}/figures/von_mises.pdf"]
     + [f"{OUT}/figures/fig5_cyclic.pdf", f"{OUT}/figures/hysteresis.pdf"]
+    + [f"{OUT}/figures/work_precision.pdf", f"{OUT}/figures/convergence.pdf"]
 )
-TABLES = [f"{OUT}/tables/torque_table.tex", f"{OUT}/tables/errata_table.tex"]
-MACROS = [f"{OUT}/macros/torque_table.tex", f"{OUT}/macros/convergence.tex", f"{OUT}/macros/build.tex", f"{OUT}/macros/history.tex", f"{OUT}/macros/errata.tex"]
+TABLES = [f"{OUT}/tables/torque_table.tex", f"{OUT}/tables/errata_table.tex", f"{OUT}/tables/scenes.tex"]
+MACROS = [f"{OUT}/macros/torque_table.tex", f"{OUT}/macros/convergence.tex", f"{OUT}/macros/build.tex", f"{OUT}/macros/history.tex", f"{OUT}/macros/errata.tex", f"{OUT}/macros/benchmark.tex", f"{OUT}/macros/scenes.tex"]
 
 
 rule build_macros:

@@ -12,12 +12,11 @@ rule torque_table:
     params:
         radii=config["torque_table"]["stick_radii"],
         n=config["n_terms"],
-        ref=config["torque_table"]["reference_n_terms"],
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
-        "python {input.script} --stick-radii {params.radii} --n-terms {params.n} --reference-n-terms {params.ref}"
+        "python {input.script} --stick-radii {params.radii} --n-terms {params.n}"
         " --csv {output.csv} --tex {output.tex} --macros {output.macros}"
 
 
@@ -93,3 +92,47 @@ rule errata_tables:
     shell:
         "python {input.script} --errata {input.errata} --reference {input.reference} --tex {output.tex}"
         " --macros {output.macros}"
+
+
+rule benchmark_speed_error:
+    input:
+        script="workflow/scripts/benchmark_speed_error.py",
+        lib=lib("workflow/scripts/benchmark_speed_error.py"),
+    output:
+        json=f"{OUT}/data/benchmark_speed_error.json",
+        macros=f"{OUT}/macros/benchmark.tex",
+    params:
+        radii=config["benchmark"]["stick_radii"],
+        n=config["benchmark"]["n_terms"],
+        nodes=config["benchmark"]["nodes"],
+        repeats=config["benchmark"]["repeats"],
+        digits=config["benchmark"]["reference_digits"],
+    threads: 2  # runs alone: timings are not disturbed by a parallel job
+    resources:
+        runtime=15,
+        mem_mb=3000,
+    shell:
+        "OMP_NUM_THREADS=1 python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
+        " --nodes {params.nodes} --repeats {params.repeats} --reference-digits {params.digits}"
+        " --json {output.json} --macros {output.macros}"
+
+
+rule benchmark_scenes:
+    input:
+        script="workflow/scripts/benchmark_scenes.py",
+        lib=lib("workflow/scripts/benchmark_scenes.py"),
+    output:
+        json=f"{OUT}/data/benchmark_scenes.json",
+        tex=f"{OUT}/tables/scenes.tex",
+        macros=f"{OUT}/macros/scenes.tex",
+    params:
+        b=config["contours"]["stick_radius"],
+        tol=config["contours"]["tolerance"],
+        nr=config["contours"]["nr"],
+        nz=config["contours"]["nz"],
+        z_max=config["contours"]["z_max"],
+    threads: 2  # runs alone: timings are not disturbed by a parallel job
+    shell:
+        "OMP_NUM_THREADS=1 python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
+        " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
+        " --json {output.json} --tex {output.tex} --macros {output.macros}"

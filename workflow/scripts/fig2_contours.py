@@ -54,7 +54,7 @@ def main():
     ax.set_xlabel(r"$r/a$")
     ax.set_ylabel(r"$z/a$")
     ax.set_title(f"{LABELS[a.quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$\n"
-                 f"({s.method} formulation, N = {s.n_terms})")
+                 f"({s.method} method" + ("" if s.n_terms is None else f", N = {s.n_terms}") + ")")
     fig.colorbar(filled, ax=ax, label=LABELS[a.quantity])
     ax.grid(False)
     save_figure(fig, a.pdf, a.png)

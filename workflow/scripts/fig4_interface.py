@@ -44,7 +44,7 @@ def main():
     ax.set_xlabel(r"$r/a$")
     ax.set_ylabel(LABELS[a.quantity])
     ax.set_xlim(0, 1)
-    ax.legend(title=f"{s.method}, N = {s.n_terms}")
+    ax.legend(title=s.method if s.n_terms is None else f"{s.method}, N = {s.n_terms}")
     save_figure(fig, a.pdf, a.png)
 
 

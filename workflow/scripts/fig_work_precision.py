@@ -1,0 +1,48 @@
+"""Work-precision diagram: wall time (median of repeats) against the error in T* and in the
+interface traction (units f p0), for each method; reads the benchmark JSON."""
+
+import argparse
+import json
+
+from torsional_contact.plotting import plt, save_figure, use_style
+
+STYLE = {"published": ("s:", "published eq. (38), N sweep"), "complete": ("o-", "complete, N sweep"),
+         "fast": ("D-", "Abel-Fredholm (fast), node sweep"),
+         "reference": ("^--", "mpmath/flint, N = 145, digits sweep")}
+FLOOR = 1e-16  # errors at rounding level are drawn at this floor
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--data", required=True)
+    p.add_argument("--style")
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png")
+    a = p.parse_args()
+    with open(a.data) as handle:
+        data = json.load(handle)
+    results = data["results"]
+    mid = results[len(results) // 2]
+    use_style(a.style)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.4))
+    for method, (marker, label) in STYLE.items():
+        rows = [r for r in mid["rows"] if r["method"] == method]
+        if not rows:
+            continue
+        ms = [1e3 * r["seconds"] for r in rows]
+        left.loglog([max(r["torque_error"], FLOOR) for r in rows], ms, marker, label=label)
+        with_traction = [r for r in rows if r["traction_error"] is not None]
+        if with_traction:
+            right.loglog([max(r["traction_error"], FLOOR) for r in with_traction],
+                         [1e3 * r["seconds"] for r in with_traction], marker, label=label)
+    for ax, what in ((left, r"$|T^*$ error$|$"), (right, r"max$_r$ |traction error| / $f p_0$")):
+        ax.set_xlabel(what)
+        ax.set_ylabel("wall time per stick radius [ms]")
+        ax.invert_xaxis()
+    left.legend(fontsize=7, title=f"$b/a = {mid['stick_radius']:g}$", loc="center right")
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()
