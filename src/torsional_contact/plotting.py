@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import argparse
+import json
 import os
 
 import matplotlib
@@ -11,7 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .output import atomic_path  # noqa: E402
 
-__all__ = ["use_style", "save_figure", "plt"]
+__all__ = ["use_style", "save_figure", "figure_parser", "load_data", "plt"]
 
 
 def use_style(style_path=None) -> None:
@@ -28,3 +30,20 @@ def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
         with atomic_path(png_path) as tmp:
             fig.savefig(tmp, format="png", dpi=dpi)
     plt.close(fig)
+
+
+def figure_parser(doc: str, data: bool = False) -> argparse.ArgumentParser:
+    """Command line of a figure script: --style, --pdf, --png (and --data for scripts that plot a JSON)."""
+    parser = argparse.ArgumentParser(description=doc.strip().splitlines()[0])
+    if data:
+        parser.add_argument("--data", required=True, help="JSON written by the workflow")
+    parser.add_argument("--style", help="matplotlib style file")
+    parser.add_argument("--pdf", required=True)
+    parser.add_argument("--png")
+    return parser
+
+
+def load_data(path) -> dict:
+    """The JSON a data rule wrote."""
+    with open(path, encoding="utf-8") as handle:
+        return json.load(handle)

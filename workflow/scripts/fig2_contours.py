@@ -4,12 +4,11 @@ Computes only what the plot needs: fields on an (r, z) grid with the per-point s
 truncated at the plot tolerance (default 1e-4 of f p0).
 """
 
-import argparse
 
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
 
 LABELS = {
     "sigma_zt": r"$\sigma_{\theta z}/f p_0$",
@@ -19,7 +18,7 @@ LABELS = {
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = figure_parser(__doc__)
     p.add_argument("--quantity", choices=sorted(LABELS), required=True)
     p.add_argument("--stick-radius", type=float, required=True)
     p.add_argument("--method", default=None)
@@ -28,9 +27,6 @@ def main():
     p.add_argument("--nz", type=int, default=101)
     p.add_argument("--z-max", type=float, default=1.0)
     p.add_argument("--tolerance", type=float, default=1e-4)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
     a = p.parse_args()
 
     s = solve(stick_radius=a.stick_radius, method=a.method, n_terms=a.n_terms)

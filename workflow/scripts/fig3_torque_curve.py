@@ -4,7 +4,6 @@ The converged curve is the Abel-Fredholm (fast) solution on [0, 1]; the weak for
 terms are drawn where N resolves both zones ([10/lam_N, 1 - 10/lam_N]).
 """
 
-import argparse
 import warnings
 
 import numpy as np
@@ -12,7 +11,7 @@ import numpy as np
 from torsional_contact import solve
 from torsional_contact.formulations import resolution_limit
 from torsional_contact.output import provenance, write_text
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
 
 
 def curve(method, n_terms, radii):
@@ -22,13 +21,10 @@ def curve(method, n_terms, radii):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = figure_parser(__doc__)
     p.add_argument("--n-terms", type=int, required=True)
     p.add_argument("--n-radii", type=int, default=200)
-    p.add_argument("--style")
     p.add_argument("--csv", required=True)
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
     a = p.parse_args()
 
     lo, hi = resolution_limit(a.n_terms)

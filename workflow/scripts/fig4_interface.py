@@ -1,12 +1,11 @@
 """Fig. 4a-c: interface traction sigma_zt(r,0), sigma_rt(r,0) (units f p0) and slip
 (units f p0 a / mu) for several b/a."""
 
-import argparse
 
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
 
 LABELS = {
     "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",
@@ -16,15 +15,12 @@ LABELS = {
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = figure_parser(__doc__)
     p.add_argument("--quantity", choices=sorted(LABELS), required=True)
     p.add_argument("--stick-radii", type=float, nargs="+", required=True)
     p.add_argument("--method", default=None)
     p.add_argument("--n-terms", type=int, default=None)
     p.add_argument("--n-points", type=int, default=801)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
     a = p.parse_args()
 
     r = np.linspace(0.0, 1.0, a.n_points)

@@ -3,23 +3,16 @@
 Reads the history data (workflow/scripts/history_data.py); computes nothing itself.
 """
 
-import argparse
-import json
 
 import numpy as np
 
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--data", required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
+    p = figure_parser(__doc__, data=True)
     a = p.parse_args()
-    with open(a.data) as handle:
-        f5 = json.load(handle)["fig5"]
+    f5 = load_data(a.data)["fig5"]
     r = np.array(f5["radii"])
     use_style(a.style)
     fig, ax = plt.subplots()

@@ -2,25 +2,18 @@
 with the observed orders of the weak forms (N sweep) and the exponential decay of the
 Abel-Fredholm method (node sweep); reads the benchmark JSON."""
 
-import argparse
-import json
 
 import numpy as np
 
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 FLOOR = 1e-16
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--data", required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
+    p = figure_parser(__doc__, data=True)
     a = p.parse_args()
-    with open(a.data) as handle:
-        results = json.load(handle)["results"]
+    results = load_data(a.data)["results"]
     use_style(a.style)
     fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.2))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]

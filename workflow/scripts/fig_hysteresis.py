@@ -4,21 +4,14 @@ torque range (with the threshold law), and the torsional compliance d omega / d 
 Units: omega in f p0 / mu; energy per cycle in (f p0)^2 a^3 / mu.  Reads the history data.
 """
 
-import argparse
-import json
 
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--data", required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
+    p = figure_parser(__doc__, data=True)
     a = p.parse_args()
-    with open(a.data) as handle:
-        data = json.load(handle)
+    data = load_data(a.data)
     use_style(a.style)
     fig, (loops, law, compliance) = plt.subplots(1, 3, figsize=(10.5, 3.2))
     for loop in data["loops"]:

@@ -5,21 +5,17 @@ published solution slips backwards on the stick disc (u = alpha r, alpha < 0) an
 carries traction 1 - alpha r > 1 on the slip annulus (see formulations docstring).
 """
 
-import argparse
 
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = figure_parser(__doc__)
     p.add_argument("--stick-radius", type=float, required=True)
     p.add_argument("--n-terms", type=int, required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
     a = p.parse_args()
 
     r = np.linspace(0, 1, 1001)

@@ -5,20 +5,16 @@ shear).  Slip starts on tau = f sigma (T* = 1), the cylinders spin on tau = 4 f 
 (T* = 4/3); yield (eq. 6) is the ellipse tau^2 + sigma^2 / 3 = 1.
 """
 
-import argparse
 
 import numpy as np
 
 from torsional_contact.criteria import von_mises_torque_limit
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = figure_parser(__doc__)
     p.add_argument("--friction", type=float, nargs="+", required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
     a = p.parse_args()
 
     sigma = np.linspace(0, np.sqrt(3), 400)  # F / (pi a^2 k)

@@ -1,10 +1,8 @@
 """Work-precision diagram: wall time (median of repeats) against the error in T* and in the
 interface traction (units f p0), for each method; reads the benchmark JSON."""
 
-import argparse
-import json
 
-from torsional_contact.plotting import plt, save_figure, use_style
+from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 STYLE = {"published": ("s:", "published eq. (38), N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm (fast), node sweep"),
@@ -13,14 +11,9 @@ FLOOR = 1e-16  # errors at rounding level are drawn at this floor
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--data", required=True)
-    p.add_argument("--style")
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png")
+    p = figure_parser(__doc__, data=True)
     a = p.parse_args()
-    with open(a.data) as handle:
-        data = json.load(handle)
+    data = load_data(a.data)
     results = data["results"]
     mid = results[len(results) // 2]
     use_style(a.style)
