@@ -46,7 +46,7 @@ import numpy as np
 from scipy import optimize
 
 from . import fields, validation
-from .fast import FastSolution, solve_fast
+from .fast import MAX_NODES, FastSolution, default_nodes, solve_fast
 from .formulations import GROSS_SLIP_TORQUE, SeriesSolution, resolution_limit, solve_series
 from .formulations import METHODS as SERIES_METHODS
 from .warnings import ResolutionWarning, TruncationWarning
@@ -113,6 +113,11 @@ class Solution:
     def sign(self) -> float:
         return -1.0 if self.torque < 0 else 1.0
 
+    @property
+    def _bilateral(self) -> bool:
+        """Stick, or a slip annulus below resolution (fields: the bilateral ones, traction capped at 1)."""
+        return self.regime == "stick" or (self.regime == "partial-slip" and self.fast is None and self.series is None)
+
     # -- the Dini representation used off the interface --------------------------------
     def field_terms(self, z_min: float) -> int:
         """Dini terms the fast method sums for fields at z >= z_min > 0 (see module docstring)."""
@@ -157,8 +162,8 @@ class Solution:
     def traction(self, r):
         """Interface shear traction sigma_zt(r, 0) / (f p0), eq. (8), (26)."""
         r = validation.coordinates(r)
-        if self.regime == "stick":
-            return (self.torque * r).astype(float)
+        if self._bilateral:
+            return np.clip(self.torque * r, -1.0, 1.0).astype(float)
         if self.fast is not None:
             return self.sign * self.fast.interface_traction(r)
         return self.sign * self.series.torque * r - self._sum(1, 1, r, np.zeros_like(r))
@@ -166,7 +171,7 @@ class Solution:
     def slip(self, r):
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (0 on the stick disc up to the method's error)."""
         r = validation.coordinates(r)
-        if self.regime == "stick":
+        if self._bilateral:
             return np.zeros_like(r)
         return 2.0 * self._interface_displacement(r)
 
@@ -206,7 +211,7 @@ class Solution:
         """(sigma_zt, sigma_rt) / (f p0) at (r, z), z >= 0; eqs. (2), (3), (23), (24)."""
         r, z = validation.coordinates(r, z)
         r, z = np.broadcast_arrays(r, z)
-        if self.regime == "stick":
+        if self._bilateral:
             return (self.torque * r).astype(float), np.zeros(r.shape)
         torque = self.sign * (self.fast.torque if self.fast is not None else self.series.torque)
         sigma_zt = np.empty(r.shape)
@@ -226,8 +231,8 @@ class Solution:
         """u_theta(r, z) of the upper cylinder in f p0 a / mu, z >= 0; eqs. (4), (22)."""
         r, z = validation.coordinates(r, z)
         r, z = np.broadcast_arrays(r, z)
-        if self.regime == "stick":
-            return (self.torque * r * z).astype(float)
+        if self._bilateral:
+            return (self.torque * r * z + self.rigid_rotation * r).astype(float)
         if self.regime == "gross-slip":
             return np.where(r > 0, self.sign * math.inf, 0.0)
         source = self.fast if self.fast is not None else self.series
@@ -288,16 +293,49 @@ def _stick(torque: float, method: str, n_terms: int | None) -> Solution:
 
 
 @functools.lru_cache(maxsize=1)
+def _fast_largest_radius() -> float:
+    """Largest stick radius the fast method resolves with at most MAX_NODES nodes (~1 - 1.5e-6)."""
+    lo, hi = 0.99, 1.0 - 1e-12
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if default_nodes(mid) <= MAX_NODES else (lo, mid)
+    return lo
+
+
+def _onset_asymptote(target: float, sign: float, n_terms) -> Solution:
+    """1 < T* < T*(b_max): a slip annulus narrower than the fast method resolves (< ~1.5e-6).
+
+    From the small-slip asymptotics (``history`` docstring; checked in tests/test_fast.py):
+    1 - b = (pi/2)(T* - 1) and omega = (pi^3/12)(T* - 1)^3, both to relative O(T* - 1)
+    (< 1e-6 here).  The fields are the bilateral ones with the traction capped at the
+    friction limit: off by at most T* - 1 in traction and (T* - 1)^2 in slip.
+    """
+    excess = target - 1.0
+    warnings.warn(
+        f"torque={sign * target:.17g} is within {excess:.1e} of slip onset: its slip annulus "
+        f"({0.5 * math.pi * excess:.1e} wide) is narrower than the fast method resolves; the stick radius and "
+        "rigid rotation come from the small-slip asymptotes and the fields are the bilateral ones capped at the "
+        f"friction limit (errors below {excess:.0e} in traction)",
+        ResolutionWarning,
+        stacklevel=3,
+    )
+    return Solution(1.0 - 0.5 * math.pi * excess, sign * target, sign * math.pi**3 / 12.0 * excess**3,
+                    "partial-slip", "fast", n_terms)
+
+
+@functools.lru_cache(maxsize=1)
 def _fast_torque_table():
     """T*(b) of the fast method on 33 radii: brackets for the inverse problem (once per process)."""
-    radii = np.linspace(0.0, 1.0, 33)
+    radii = np.append(np.linspace(0.0, 1.0, 33)[:-1], _fast_largest_radius())
     torques = np.array([solve_fast(b).torque for b in radii])
     return radii, torques
 
 
-def _invert_fast(target: float) -> FastSolution:
+def _invert_fast(target: float) -> FastSolution | None:
     """Stick radius b with T*(b) = target, 1 < target < 4/3 (fast method; ~10 solves)."""
     radii, torques = _fast_torque_table()
+    if target <= torques[-1]:
+        return None  # below the resolution of the fast method: see _onset_asymptote
     upper = int(np.argmax(torques <= target))  # first radius whose torque is below the target
     lower = max(upper - 1, 0)
     b = optimize.brentq(lambda b: solve_fast(b).torque - target, radii[lower], radii[upper],
@@ -397,7 +435,10 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None) -> Solut
             return _from_fast(solve_fast(0.0), sign, n_terms, "gross-slip")
         return _from_series(solve_series(0.0, method, n_terms), sign, n_terms, "gross-slip")
     if method == "fast":
-        solution = _from_fast(_invert_fast(magnitude), sign, n_terms, "partial-slip")
+        fs = _invert_fast(magnitude)
+        if fs is None:
+            return _onset_asymptote(magnitude, sign, n_terms)
+        solution = _from_fast(fs, sign, n_terms, "partial-slip")
     else:
         solution = _from_series(_invert_series(magnitude, method, n_terms), sign, n_terms, "partial-slip")
     # Report the torque asked for; the fields use the solution's own T*(b), which
