@@ -145,13 +145,16 @@ def _format_warning(message, category, filename, lineno, line=None):
 
 def main(argv=None) -> int:
     parser = build_parser()
-    warnings.formatwarning = _format_warning
+    saved_format = warnings.formatwarning
+    warnings.formatwarning = _format_warning  # one line per accuracy warning
     try:
         args = parser.parse_args(argv)
         result = args.handler(args)
     except (UsageError, ValueError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
+    finally:
+        warnings.formatwarning = saved_format
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
     elif isinstance(result, list):  # one record per line

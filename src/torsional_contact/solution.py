@@ -327,7 +327,9 @@ def _onset_asymptote(target: float, sign: float, n_terms) -> Solution:
 def _fast_torque_table():
     """T*(b) of the fast method on 33 radii: brackets for the inverse problem (once per process)."""
     radii = np.append(np.linspace(0.0, 1.0, 33)[:-1], _fast_largest_radius())
-    torques = np.array([solve_fast(b).torque for b in radii])
+    with warnings.catch_warnings():  # brackets only: T* near the cap is still good to ~1e-12
+        warnings.simplefilter("ignore", ResolutionWarning)
+        torques = np.array([solve_fast(b).torque for b in radii])
     return radii, torques
 
 
@@ -338,8 +340,10 @@ def _invert_fast(target: float) -> FastSolution | None:
         return None  # below the resolution of the fast method: see _onset_asymptote
     upper = int(np.argmax(torques <= target))  # first radius whose torque is below the target
     lower = max(upper - 1, 0)
-    b = optimize.brentq(lambda b: solve_fast(b).torque - target, radii[lower], radii[upper],
-                        xtol=_B_XTOL, rtol=4 * np.finfo(float).eps)
+    with warnings.catch_warnings():  # the probes; the answer below warns for itself
+        warnings.simplefilter("ignore", ResolutionWarning)
+        b = optimize.brentq(lambda b: solve_fast(b).torque - target, radii[lower], radii[upper],
+                            xtol=_B_XTOL, rtol=4 * np.finfo(float).eps)
     return solve_fast(b)
 
 
