@@ -105,6 +105,13 @@ def _cmd_errata(args) -> list:
     return errata_table()
 
 
+def _add_solver_options(p) -> None:
+    """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
+    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
+    p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
+    p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog=PROG, description="Frictional torsional contact of flat-ended cylinders.")
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
@@ -114,16 +121,12 @@ def build_parser() -> argparse.ArgumentParser:
     group = p.add_mutually_exclusive_group(required=True)
     group.add_argument("--stick-radius", type=float, help="b/a in [0, 1]")
     group.add_argument("--torque", type=float, help="T* = 2T/(f F a) in [-4/3, 4/3]")
-    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
-    p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
-    p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
+    _add_solver_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
     p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
     p.add_argument("--turning-points", type=float, nargs="+", required=True, help="T* after each step, in [-4/3, 4/3]")
-    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
-    p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
-    p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
+    _add_solver_options(p)
     p.add_argument("--json", action="store_true", help="print a JSON list, one state per turning point")
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision (mpmath) solution of the truncated system")
