@@ -14,8 +14,9 @@
 # %% [markdown]
 # # Double precision against arbitrary precision
 #
-# Reads `errata/errata.json` and `errata/reference_complete.json` written by the workflow
-# (`workflow/scripts/errata_report.py`): the mpmath/flint reference of the truncated systems,
+# Reads `verification/crosscheck.json` and `verification/reference_complete.json` written by the
+# workflow (`workflow/scripts/precision_crosscheck.py`, `reference_weak_form.py`): the mpmath/flint
+# reference of the truncated systems,
 # the digits the scipy solver loses to rounding, the truncation error, and the condition
 # numbers of both formulations. Set `RESULTS_DIR` to read another output folder.
 
@@ -28,12 +29,8 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 
 RESULTS = Path(os.environ.get("RESULTS_DIR", "../results"))
-data = json.loads((RESULTS / "errata" / "errata.json").read_text())
-reference = json.loads((RESULTS / "errata" / "reference_complete.json").read_text())
-
-
-def section(prefix):
-    return next(v for k, v in data["crosscheck"].items() if k.startswith(prefix))
+crosscheck = json.loads((RESULTS / "verification" / "crosscheck.json").read_text())
+reference = json.loads((RESULTS / "verification" / "reference_complete.json").read_text())
 
 
 # %% [markdown]
@@ -49,7 +46,7 @@ for s in reference["solutions"]:
 # A solver that loses more digits than its condition number predicts would be suspicious.
 
 # %%
-rounding = section("Rounding")
+rounding = crosscheck["rounding"]
 for r in rounding:
     print(f"{r['method']:9s} b/a = {r['stick_radius']:.1f}: T* rel. error {r['torque']:.1e}, "
           f"digits lost {r['digits_lost']:.1f} (condition number predicts {r['predicted_digits_lost']:.1f})")
@@ -59,14 +56,14 @@ assert max(r["digits_lost"] for r in rounding) < 6
 # ## Truncation, for comparison
 
 # %%
-for t in section("Truncation"):
+for t in crosscheck["truncation"]:
     print(f"{t['method']:9s} b/a = {t['stick_radius']:.1f}: relative change of T* {t['torque_rel_change']:.1e}")
 
 # %% [markdown]
 # ## Condition numbers against N
 
 # %%
-conditions = section("Condition numbers")
+conditions = crosscheck["condition_numbers"]
 fig, ax = plt.subplots()
 for method in ("published", "complete"):
     rows = [c for c in conditions if c["method"] == method]

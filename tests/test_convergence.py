@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from torsional_contact.convergence import format_table, n_terms_study
+from torsional_contact.verification.convergence import format_table, n_terms_study
 
 
 def test_complete_formulation_converges_at_order_about_one(capsys):

@@ -10,7 +10,9 @@ import math
 import mpmath
 import pytest
 
-from torsional_contact import cli, errata, reference
+from torsional_contact.io import cli
+from torsional_contact.verification import errata, weak_form_mp
+from torsional_contact.verification.quadrature import gauss_legendre
 
 EXPECTED = {
     "2": "correct",
@@ -93,12 +95,12 @@ def test_verdict_rules():
 def test_quadrature_detects_a_wrong_formula():
     """The machinery would flag a sign error in (35): h with + 2 J0 J1 / lam."""
     with mpmath.workdps(40):
-        lam = reference.j2_zeros(3, 40)[2]
-        nodes, weights = errata.gauss_legendre(0, 1, 2 * lam)
+        lam = weak_form_mp.j2_zeros(3, 40)[2]
+        nodes, weights = gauss_legendre(0, 1, 2 * lam)
         quad = mpmath.fsum(w * mpmath.besselj(1, lam * r) ** 2 * r for r, w in zip(nodes, weights, strict=True))
         j0, j1 = mpmath.besselj(0, lam), mpmath.besselj(1, lam)
         wrong = (j0 * j0 + 2 * j0 * j1 / lam + j1 * j1) / 2
-        right = reference.dini_norm(lam)
+        right = weak_form_mp.dini_norm(lam)
         assert errata.verdict_formula(float(abs(wrong - quad) / quad)) == "incorrect"
         assert errata.verdict_formula(float(abs(right - quad) / quad)) == "correct"
 
@@ -106,7 +108,7 @@ def test_quadrature_detects_a_wrong_formula():
 def test_gauss_legendre_oscillatory():
     with mpmath.workdps(40):
         omega = mpmath.mpf(3000)
-        nodes, weights = errata.gauss_legendre(0, 1, omega)
+        nodes, weights = gauss_legendre(0, 1, omega)
         got = mpmath.fsum(w * mpmath.cos(omega * x) for x, w in zip(nodes, weights, strict=True))
         assert abs(got - mpmath.sin(omega) / omega) < mpmath.mpf(10) ** -34
 

@@ -1,7 +1,7 @@
-"""The Abel-Fredholm solver (``fast``) and its kernels (``kernels``).
+"""The Abel-Fredholm solver (``solvers.abel_fredholm``) and its kernels (``solvers.kernels``).
 
 Every check compares with something computed another way: mpmath quadrature, the Dini
-series of ``formulations`` (the paper's representation), the weak form extrapolated in
+series of ``solvers.weak_form`` (the paper's representation), the weak form extrapolated in
 N, physical identities, or the solver at a different resolution.
 """
 
@@ -14,10 +14,11 @@ import pytest
 from numpy.polynomial import legendre
 from scipy import special
 
-from torsional_contact import fields, kernels
-from torsional_contact.fast import default_nodes, solve_fast
-from torsional_contact.formulations import solve_series
-from torsional_contact.zeros import bessel_j2_zeros
+from torsional_contact import fields
+from torsional_contact.solvers import kernels
+from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
+from torsional_contact.solvers.weak_form import solve_series
+from torsional_contact.special.zeros import bessel_j2_zeros
 
 RADII = (0.02, 0.1, 0.3, 0.5, 0.6, 0.7, 0.9, 0.98)
 
@@ -254,7 +255,7 @@ def test_large_stick_discs():
 
 
 def test_capped_resolution_warns():
-    from torsional_contact.warnings import ResolutionWarning
+    from torsional_contact.diagnostics import ResolutionWarning
 
     with pytest.warns(ResolutionWarning):
         solve_fast(1 - 1e-9)
@@ -268,8 +269,8 @@ def test_bad_input():
 
 @pytest.mark.parametrize(("b", "n_basis"), [(0.3, 8), (0.6, 10)])
 def test_agrees_with_direct_collocation(b, n_basis):
-    """A second method: first-kind collocation of u = 0 on the stick disc (``direct``)."""
-    from torsional_contact.direct import solve_direct
+    """A second method: first-kind collocation of u = 0 on the stick disc (``verification.collocation``)."""
+    from torsional_contact.verification.collocation import solve_direct
 
     fast, direct = solve_fast(b), solve_direct(b, n_basis)
     assert direct.residual < 1e-12

@@ -1,4 +1,4 @@
-"""Interface conditions, limits and the published formulation's defect (issue 2)."""
+"""Interface conditions, limits and the published formulation's defect."""
 
 import warnings
 
@@ -7,9 +7,10 @@ import pytest
 from quadrature import integrate
 
 from torsional_contact import ResolutionWarning, solve
-from torsional_contact.formulations import assemble, solve_series
-from torsional_contact.integrals import coupling_matrix, dini_norm, load_vector
-from torsional_contact.zeros import bessel_j2_zeros
+from torsional_contact.diagnostics import UnphysicalResultWarning
+from torsional_contact.solvers.weak_form import assemble, solve_series
+from torsional_contact.special.integrals import coupling_matrix, dini_norm, load_vector
+from torsional_contact.special.zeros import bessel_j2_zeros
 
 MARGIN = 0.05  # distance from r = b where pointwise checks start
 
@@ -124,7 +125,7 @@ class TestPublishedDefect:
         assert np.all(self.pub.traction(r) > 1.0)  # exceeds the friction limit
 
     def test_torque_exceeds_spinning_for_small_stick_disc(self):
-        with pytest.warns(RuntimeWarning, match="physically impossible"):
+        with pytest.warns(UnphysicalResultWarning, match="physically impossible"):
             s = solve(stick_radius=0.3, method="published", n_terms=145)
         assert s.torque > 4 / 3
         assert self.pub.torque - self.com.torque > 0.02

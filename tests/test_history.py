@@ -1,7 +1,7 @@
-"""Torque histories: memory rules, shakedown, hysteresis and dissipation (issue 6).
+"""Torque histories: memory rules, shakedown, hysteresis and dissipation.
 
 Every memory-rule number is checked against something computed another way: the
-direct weak-form solve of the incremental mixed problem (``incremental``), the
+direct weak-form solve of the incremental mixed problem (``verification.incremental``), the
 elastic unloading of the loaded traction, the friction-law closed form of the
 dissipation, or the anti-plane edge-crack asymptotics of the module docstring.
 """
@@ -20,9 +20,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from torsional_contact import ResolutionWarning
-from torsional_contact import history as H
-from torsional_contact.cli import main
-from torsional_contact.incremental import solve_mixed, solve_mixed_for_torque
+from torsional_contact import histories as H
+from torsional_contact.io.cli import main
+from torsional_contact.verification.incremental import solve_mixed, solve_mixed_for_torque
 
 N = 145
 R = np.linspace(0.0, 1.0, 401)
@@ -57,7 +57,7 @@ def _away(r, radii, gap=0.05):
 # --------------------------------------------------------------------------- direct solver
 def test_direct_solver_reproduces_the_monotonic_solution():
     """g = 0, p = 1 is the paper's problem (7)-(8): same T*(b) and omega as ``solve``."""
-    from torsional_contact.formulations import solve_series
+    from torsional_contact.solvers.weak_form import solve_series
 
     for b in (0.3, 0.6, 0.9):
         direct = solve_mixed(b, np.zeros_like, np.ones_like, n_terms=N)

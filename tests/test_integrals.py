@@ -6,8 +6,8 @@ import pytest
 from quadrature import integrate
 from scipy import special
 
-from torsional_contact import integrals
-from torsional_contact.zeros import bessel_j2_zeros
+from torsional_contact.special import integrals
+from torsional_contact.special.zeros import bessel_j2_zeros
 
 LAM = bessel_j2_zeros(3200)  # lambda_3200 ~ 1.005e4
 INDICES = [1, 2, 3, 10, 100, 1000, 3200]

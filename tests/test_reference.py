@@ -1,4 +1,4 @@
-"""The high-precision reference (reference.py) against independent computations.
+"""The high-precision reference (verification/reference.py) against independent computations.
 
 Independent means: mpmath.besseljzero for the zeros, mpmath.quad for the integrals,
 a second precision / a second linear-solve backend for the solve, and a direct
@@ -15,8 +15,12 @@ import mpmath
 import numpy as np
 import pytest
 
-from torsional_contact import cli, formulations, integrals, reference
-from torsional_contact.zeros import bessel_j2_zeros
+from torsional_contact.diagnostics import AccuracyWarning
+from torsional_contact.io import cli
+from torsional_contact.solvers import weak_form as formulations
+from torsional_contact.special import integrals
+from torsional_contact.special.zeros import bessel_j2_zeros
+from torsional_contact.verification import arbitrary_precision, crosscheck, reference, weak_form_mp
 
 
 def _quad(f, lower, upper, lam_max):
@@ -28,62 +32,62 @@ def _quad(f, lower, upper, lam_max):
 
 def test_zeros_match_besseljzero_and_restore_precision():
     before = mpmath.mp.dps
-    lam = reference.j2_zeros(145, 50)
+    lam = weak_form_mp.j2_zeros(145, 50)
     assert mpmath.mp.dps == before
     with mpmath.workdps(50):
         for n in (1, 2, 5, 60, 145):
             assert abs(lam[n - 1] - mpmath.besseljzero(2, n)) < mpmath.mpf(10) ** -48 * lam[n - 1]
-    picked = reference.j2_zeros_at([3, 145], 50)
+    picked = weak_form_mp.j2_zeros_at([3, 145], 50)
     assert picked == (lam[2], lam[144])
 
 
 @pytest.mark.parametrize("lam_index", [1, 7, 40])
 def test_closed_forms_match_quadrature(lam_index):
     with mpmath.workdps(30):
-        lam = reference.j2_zeros(max(40, lam_index + 1), 30)
+        lam = weak_form_mp.j2_zeros(max(40, lam_index + 1), 30)
         x, y = lam[lam_index - 1], lam[lam_index]
         b = mpmath.mpf("0.35")
         tol = mpmath.mpf(10) ** -25
         h = _quad(lambda r: mpmath.besselj(1, x * r) ** 2 * r, 0, 1, 2 * x)
-        assert abs(reference.dini_norm(x) - h) < tol * h
+        assert abs(weak_form_mp.dini_norm(x) - h) < tol * h
         off = _quad(lambda r: mpmath.besselj(1, x * r) * mpmath.besselj(1, y * r) * r, b, 1, x + y)
-        assert abs(reference.lommel_offdiagonal(x, y, b) - off) < tol * abs(off)
+        assert abs(weak_form_mp.lommel_offdiagonal(x, y, b) - off) < tol * abs(off)
         diag = _quad(lambda r: mpmath.besselj(1, x * r) ** 2 * r, b, 1, 2 * x)
-        assert abs(reference.lommel_diagonal(x, b) - diag) < tol * diag
+        assert abs(weak_form_mp.lommel_diagonal(x, b) - diag) < tol * diag
         torque = mpmath.mpf("1.25")
         load = _quad(lambda r: (torque * r - 1) * mpmath.besselj(1, x * r) * r, b, 1, x)
         for form in ("hyp1f2", "struve"):
-            assert abs(reference.load_vector(x, b, torque, form) - load) < tol * abs(load)
+            assert abs(weak_form_mp.load_vector(x, b, torque, form) - load) < tol * abs(load)
 
 
 def test_hyp1f2_and_struve_forms_agree_at_large_argument():
     with mpmath.workdps(40):
         for x in ("0.5", "37.2", "460.1", "9000.3"):
-            g1 = reference.integral_t_j1_hyp1f2(mpmath.mpf(x))
-            g2 = reference.integral_t_j1_struve(mpmath.mpf(x))
+            g1 = weak_form_mp.integral_t_j1_hyp1f2(mpmath.mpf(x))
+            g2 = weak_form_mp.integral_t_j1_struve(mpmath.mpf(x))
             assert abs(g1 - g2) < mpmath.mpf(10) ** -35 * abs(g2)
 
 
 def test_assembly_matches_double_precision_assembly():
-    lam = reference.j2_zeros(30, 30)
+    lam = weak_form_mp.j2_zeros(30, 30)
     lam_double = bessel_j2_zeros(30)
     for method in ("published", "complete"):
         with mpmath.workdps(30):
-            m_mp, rt_mp, rc_mp = reference.assemble(method, lam, mpmath.mpf("0.45"))
+            m_mp, rt_mp, rc_mp = weak_form_mp.assemble(method, lam, mpmath.mpf("0.45"))
         m_dp, rt_dp, rc_dp = formulations.assemble(method, lam_double, 0.45)
         m_mp = np.array(m_mp.tolist(), dtype=float)
         assert np.max(np.abs(m_mp - m_dp)) < 1e-13 * np.max(np.abs(m_dp))
         assert np.allclose(np.array(rt_mp, dtype=float), rt_dp, rtol=0, atol=1e-14)
         assert np.allclose(np.array(rc_mp, dtype=float), rc_dp, rtol=0, atol=1e-14)
     with mpmath.workdps(30):
-        c_mp = np.array(reference.coupling_matrix(lam[:8], mpmath.mpf("0.45")).tolist(), dtype=float)
+        c_mp = np.array(weak_form_mp.coupling_matrix(lam[:8], mpmath.mpf("0.45")).tolist(), dtype=float)
     c_dp = integrals.coupling_matrix(lam_double[:8], 0.45)
     assert np.max(np.abs(c_mp - c_dp)) < 1e-13 * np.max(np.abs(c_dp))
 
 
 @pytest.mark.parametrize("method", ["published", "complete"])
 def test_solution_independent_of_precision_backend_and_form(method):
-    flint_prec = None if reference.flint is None else reference.flint.ctx.prec
+    flint_prec = None if arbitrary_precision.flint is None else arbitrary_precision.flint.ctx.prec
     a = reference.solve_reference(0.6, method, 25, 30)
     b = reference.solve_reference(0.6, method, 25, 45, backend="mpmath", form="struve")
     with mpmath.workdps(45):
@@ -96,7 +100,7 @@ def test_solution_independent_of_precision_backend_and_form(method):
             assert a.rigid_rotation is None and b.rigid_rotation is None
     assert a.solve_bound is not None and a.solve_bound < 1e-40  # rigorous (Arb) bound on the solve
     assert mpmath.mp.dps == 15
-    assert reference.flint is None or reference.flint.ctx.prec == flint_prec
+    assert arbitrary_precision.flint is None or arbitrary_precision.flint.ctx.prec == flint_prec
 
 
 def test_regularity_condition_and_stick_condition_hold():
@@ -129,8 +133,8 @@ def test_regularity_condition_and_stick_condition_hold():
 def test_scipy_agrees_with_reference_to_condition_number(method, b):
     ref = reference.solve_reference(b, method, 40, 30)
     with warnings.catch_warnings():
-        warnings.simplefilter("error", reference.AccuracyWarning)
-        err = reference.rounding_error(ref)
+        warnings.simplefilter("error", AccuracyWarning)
+        err = crosscheck.rounding_error(ref)
     allowed = 100 * np.finfo(float).eps / err["rcond"]
     assert err["torque"] < allowed
     assert err["amplitudes"] < allowed
@@ -140,7 +144,7 @@ def test_scipy_agrees_with_reference_to_condition_number(method, b):
 
 
 def test_condition_numbers_small_n():
-    rows = reference.condition_numbers([20, 60], 0.6)
+    rows = crosscheck.condition_numbers([20, 60], 0.6)
     assert {(r["n_terms"], r["method"]) for r in rows} == {
         (20, "published"),
         (20, "complete"),
@@ -166,7 +170,7 @@ def test_write_json_atomic(tmp_path):
     entry = data["solutions"][0]
     assert entry["n_terms"] == 10 and entry["digits"] == 25 and entry["method"] == "complete"
     assert len(entry["torque"].replace(".", "").lstrip("0")) >= 25
-    assert data["versions"]["mpmath"] == mpmath.__version__
+    assert data["metadata"]["packages"]["mpmath"] == mpmath.__version__
     with mpmath.workdps(25):
         assert abs(mpmath.mpf(entry["torque"]) - sols[0].torque) < mpmath.mpf(10) ** -24
 

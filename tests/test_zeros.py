@@ -2,7 +2,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from torsional_contact.zeros import PAPER_J2_ZEROS, bessel_j2_zeros
+from torsional_contact.special.zeros import PAPER_J2_ZEROS, bessel_j2_zeros
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 5, 8, 13, 50, 100, 777, 1000, 4321, 10000])

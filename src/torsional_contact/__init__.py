@@ -1,32 +1,52 @@
 """Frictional torsional contact of two elastically similar flat-ended cylinders.
 
-Public interface (see CONTRACT.md): ``solve`` returns a ``Solution`` with the stick
-radius, the torque T* = 2T/(f F a), the rigid rotation, the regime and the fields.
+The public surface: ``solve`` returns a ``Solution`` with the stick radius b/a, the torque
+T* = 2T/(f F a), the rigid rotation omega (f p0 / mu), the regime and the fields;
+``histories`` applies the memory rules to a torque history.  Conventions and units are in
+the README ("Conventions and public interface").
+
+Submodules are imported lazily, on first use of a name, so that ``import torsional_contact``
+is cheap and a workflow script depends only on the modules it really uses.
 """
 
-from .criteria import GROSS_SLIP_TORQUE, SLIP_ONSET_TORQUE
-from .direct import solve_direct
-from .fast import FastSolution, solve_fast
-from .solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve, torque_curve
-from .warnings import AccuracyWarning, IllConditioningWarning, ResolutionWarning, TruncationWarning
+from __future__ import annotations
 
-__version__ = "0.1.0"
+import importlib
+from importlib import metadata as _metadata
 
-__all__ = [
-    "solve",
-    "Solution",
-    "torque_curve",
-    "solve_fast",
-    "FastSolution",
-    "solve_direct",
-    "METHODS",
-    "DEFAULT_METHOD",
-    "DEFAULT_N_TERMS",
-    "SLIP_ONSET_TORQUE",
-    "GROSS_SLIP_TORQUE",
-    "AccuracyWarning",
-    "IllConditioningWarning",
-    "ResolutionWarning",
-    "TruncationWarning",
-    "__version__",
-]
+try:
+    __version__ = _metadata.version("torsional_contact")
+except _metadata.PackageNotFoundError:  # pragma: no cover - running from a source tree without install
+    __version__ = "0+unknown"
+
+#: public name -> submodule that defines it
+_EXPORTS = {
+    "solve": "solution",
+    "Solution": "solution",
+    "torque_curve": "solution",
+    "METHODS": "solution",
+    "DEFAULT_METHOD": "solution",
+    "DEFAULT_N_TERMS": "solution",
+    "history": "histories",
+    "SLIP_ONSET_TORQUE": "criteria",
+    "GROSS_SLIP_TORQUE": "criteria",
+    "AccuracyWarning": "diagnostics",
+    "IllConditioningWarning": "diagnostics",
+    "ResolutionWarning": "diagnostics",
+    "TruncationWarning": "diagnostics",
+}
+
+__all__ = [*_EXPORTS, "__version__"]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        module = importlib.import_module(f".{_EXPORTS[name]}", __name__)
+        value = getattr(module, name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -10,8 +10,6 @@ import numpy as np
 __all__ = [
     "SLIP_ONSET_TORQUE",
     "GROSS_SLIP_TORQUE",
-    "normalised_torque",
-    "slip_onset_torque",
     "von_mises_index",
     "von_mises_torque_limit",
 ]
@@ -20,16 +18,6 @@ __all__ = [
 SLIP_ONSET_TORQUE = 1.0
 #: T* at which the whole face slips (traction f p0 everywhere: T = 2 pi a^3 f p0 / 3).
 GROSS_SLIP_TORQUE = 4.0 / 3.0
-
-
-def normalised_torque(torque, friction_coefficient, normal_force, radius):
-    """T* = 2 T / (f F a), eq. (32)."""
-    return 2.0 * np.asarray(torque, dtype=float) / (friction_coefficient * normal_force * radius)
-
-
-def slip_onset_torque(friction_coefficient, normal_force, radius):
-    """Largest |T| with the face fully stuck, eq. (5): T = f F a / 2 (units of F a)."""
-    return 0.5 * friction_coefficient * normal_force * radius
 
 
 def von_mises_index(torque, normal_force, radius, shear_yield):

@@ -7,7 +7,12 @@ import numbers
 
 import numpy as np
 
-__all__ = ["real_number", "positive_int", "choice", "coordinates"]
+from .criteria import GROSS_SLIP_TORQUE
+
+#: Relative tolerance on |T*| = 4/3 that still counts as the spinning limit (rounding).
+TORQUE_TOLERANCE = 4 * np.finfo(float).eps
+
+__all__ = ["real_number", "positive_int", "choice", "coordinates", "torque", "torque_sequence", "TORQUE_TOLERANCE"]
 
 
 def real_number(name: str, value, low: float | None = None, high: float | None = None, note: str = ""):
@@ -50,3 +55,31 @@ def coordinates(r, z=None):
     if not np.all(np.isfinite(z)) or np.any(z < 0):
         raise ValueError("z must be finite and >= 0 (the upper cylinder; units of a)")
     return r, z
+
+
+def torque(name: str, value) -> float:
+    """``value`` as a finite T* in [-4/3, 4/3] (rounding beyond 4/3 clipped), or ValueError naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+        raise ValueError(f"{name} must be a real number in [-4/3, 4/3], got {value!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{name} must be finite and lie in [-4/3, 4/3], got {value!r}")
+    if abs(value) > GROSS_SLIP_TORQUE * (1 + TORQUE_TOLERANCE):
+        raise ValueError(
+            f"{name} must lie in [-4/3, 4/3], got {value!r}: above 4/3 the cylinders spin "
+            "(gross slip), there is no static solution"
+        )
+    return max(-GROSS_SLIP_TORQUE, min(GROSS_SLIP_TORQUE, value))
+
+
+def torque_sequence(name: str, values) -> list[float]:
+    """``values`` as a non-empty list of finite torques in [-4/3, 4/3], or ValueError naming ``name[i]``."""
+    try:
+        items = list(np.asarray(values, dtype=object).ravel()) if not isinstance(values, (str, bytes)) else None
+    except TypeError as exc:  # not iterable
+        raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}") from exc
+    if items is None:
+        raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}")
+    if not items:
+        raise ValueError(f"{name} must contain at least one torque in [-4/3, 4/3]")
+    return [torque(f"{name}[{i}]", v) for i, v in enumerate(items)]

@@ -1,4 +1,6 @@
-# One rule per figure; each calls one script in workflow/scripts/.
+# One rule per figure; each calls one script in workflow/scripts/ and writes PDF + PNG.
+
+FIGURE_METHOD = "" if config["method"] == "fast" else f"--n-terms {config['n_terms']}"
 
 
 rule fig2_contours:
@@ -10,19 +12,21 @@ rule fig2_contours:
         **fig("fig2_{quantity}"),
     params:
         b=config["contours"]["stick_radius"],
-        n="" if config["method"] == "fast" else f"--n-terms {config['n_terms']}",
+        n=FIGURE_METHOD,
         method=config["method"],
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
         tol=config["contours"]["tolerance"],
+    log:
+        logfile("fig2_{quantity}"),
     resources:
         runtime=5,
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radius {params.b} --method {params.method}"
         " {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
-        " --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
 
 rule fig3_torque_curve:
@@ -36,12 +40,14 @@ rule fig3_torque_curve:
     params:
         n=config["n_terms"],
         n_radii=config["torque_curve"]["n_radii"],
+    log:
+        logfile("fig3_torque_curve"),
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
         "python {input.script} --n-terms {params.n} --n-radii {params.n_radii}"
-        " --style {input.style} --csv {output.csv} --pdf {output.pdf} --png {output.png}"
+        " --style {input.style} --csv {output.csv} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
 
 rule fig4_interface:
@@ -53,15 +59,18 @@ rule fig4_interface:
         **fig("fig4_{quantity}"),
     params:
         radii=config["interface"]["stick_radii"],
-        n="" if config["method"] == "fast" else f"--n-terms {config['n_terms']}",
+        n=FIGURE_METHOD,
         method=config["method"],
         points=config["interface"]["n_points"],
+    log:
+        logfile("fig4_{quantity}"),
     resources:
         runtime=5,
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radii {params.radii} --method {params.method}"
         " {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
 
 
 rule fig_published_vs_complete:
@@ -74,12 +83,14 @@ rule fig_published_vs_complete:
     params:
         b=config["comparison"]["stick_radius"],
         n=config["n_terms"],
+    log:
+        logfile("published_vs_complete"),
     resources:
         runtime=5,
         mem_mb=500,
     shell:
         "python {input.script} --stick-radius {params.b} --n-terms {params.n}"
-        " --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
 
 rule fig_von_mises:
@@ -91,58 +102,87 @@ rule fig_von_mises:
         **fig("von_mises"),
     params:
         friction=config["von_mises"]["friction"],
+    log:
+        logfile("von_mises"),
     resources:
         runtime=2,
         mem_mb=500,
     shell:
-        "python {input.script} --friction {params.friction} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        "python {input.script} --friction {params.friction} --style {input.style} --pdf {output.pdf}"
+        " --png {output.png} > {log} 2>&1"
 
 
 rule fig5_cyclic:
     input:
         script="workflow/scripts/fig5_cyclic.py",
         style=STYLE,
+        lib=lib("workflow/scripts/fig5_cyclic.py"),
         data=f"{OUT}/data/history.json",
     output:
         **fig("fig5_cyclic"),
+    log:
+        logfile("fig5_cyclic"),
     resources:
         runtime=2,
         mem_mb=500,
     shell:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
 
 
 rule fig_hysteresis:
     input:
         script="workflow/scripts/fig_hysteresis.py",
         style=STYLE,
+        lib=lib("workflow/scripts/fig_hysteresis.py"),
         data=f"{OUT}/data/history.json",
     output:
         **fig("hysteresis"),
+    log:
+        logfile("hysteresis"),
     resources:
         runtime=2,
         mem_mb=500,
     shell:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
 
 
 rule fig_work_precision:
     input:
         script="workflow/scripts/fig_work_precision.py",
         style=STYLE,
+        lib=lib("workflow/scripts/fig_work_precision.py"),
         data=f"{OUT}/data/benchmark_speed_error.json",
     output:
         **fig("work_precision"),
+    log:
+        logfile("work_precision"),
+    resources:
+        runtime=2,
+        mem_mb=500,
     shell:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
 
 
 rule fig_convergence:
     input:
         script="workflow/scripts/fig_convergence.py",
         style=STYLE,
+        lib=lib("workflow/scripts/fig_convergence.py"),
         data=f"{OUT}/data/benchmark_speed_error.json",
     output:
         **fig("convergence"),
+    log:
+        logfile("convergence"),
+    resources:
+        runtime=2,
+        mem_mb=500,
     shell:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
+
+
+WILDCARDS["fig2_contours"] = {"quantity": config["contours"]["quantities"]}
+WILDCARDS["fig4_interface"] = {"quantity": config["interface"]["quantities"]}

@@ -1,50 +1,64 @@
 # The manuscript: paper/ms.tex with generated figures, tables and macros, compiled by latexmk.
+# Its inputs are read off the LaTeX source itself: every \resultsdir/... path and every
+# \loadresults{name} (results/macros/name.tex), so nothing is listed twice by hand.
+import re
 
-FIGURES = (
-    [f"{OUT}/figures/fig2_{q}.pdf" for q in config["contours"]["quantities"]]
-    + [f"{OUT}/figures/fig3_torque_curve.pdf"]
-    + [f"{OUT}/figures/fig4_{q}.pdf" for q in config["interface"]["quantities"]]
-    + [f"{OUT}/figures/published_vs_complete.pdf", f"{OUT}/figures/von_mises.pdf"]
-    + [f"{OUT}/figures/fig5_cyclic.pdf", f"{OUT}/figures/hysteresis.pdf"]
-    + [f"{OUT}/figures/work_precision.pdf", f"{OUT}/figures/convergence.pdf"]
-)
-TABLES = [f"{OUT}/tables/torque_table.tex", f"{OUT}/tables/errata_table.tex", f"{OUT}/tables/scenes.tex"]
-MACROS = [f"{OUT}/macros/torque_table.tex", f"{OUT}/macros/convergence.tex", f"{OUT}/macros/build.tex", f"{OUT}/macros/history.tex", f"{OUT}/macros/errata.tex", f"{OUT}/macros/benchmark.tex", f"{OUT}/macros/scenes.tex"]
+MANUSCRIPT = "paper/ms.tex"
+
+
+def manuscript_inputs():
+    """Generated files the manuscript reads (parsed from paper/ms.tex)."""
+    text = Path(MANUSCRIPT).read_text()
+    text = "\n".join(line.split("%", 1)[0] for line in text.splitlines())  # drop comments
+    paths = {f"{OUT}/{p}" for p in re.findall(r"\\resultsdir/([\w/-]+\.\w+)", text)}
+    paths |= {f"{OUT}/macros/{name}.tex" for name in re.findall(r"\\loadresults\{([\w.-]+)\}", text)}
+    return sorted(paths)
 
 
 rule build_macros:
     input:
         script="workflow/scripts/build_macros.py",
+        lib=lib("workflow/scripts/build_macros.py"),
     output:
         f"{OUT}/macros/build.tex",
     params:
         n=config["n_terms"],
         method=config["method"],
-        outdir=OUT,
+        contour_b=config["contours"]["stick_radius"],
+    log:
+        logfile("build_macros"),
+    resources:
+        runtime=2,
+        mem_mb=500,
     shell:
-        "python {input.script} --n-terms {params.n} --method {params.method} --outdir {params.outdir} --output {output}"
+        "python {input.script} --n-terms {params.n} --method {params.method} --contour-stick-radius {params.contour_b}"
+        " --output {output} > {log} 2>&1"
 
 
 rule paper:
     input:
-        tex="paper/ms.tex",
+        tex=MANUSCRIPT,
         bib="paper/references.bib",
-        figures=FIGURES,
-        tables=TABLES,
-        macros=MACROS,
+        results=manuscript_inputs(),
     output:
         PAPER_PDF,
     params:
         build=f"{OUT}/paper/build",
         outdir=OUT,
     log:
-        f"{OUT}/paper/latexmk.log",
+        logfile("paper"),
     resources:
         runtime=10,
         mem_mb=1000,
     shell:
-        # -cd: run in paper/ so references.bib is found; results are reached by absolute path
+        # -cd: run in paper/ so references.bib is found; \resultsdir is relative to paper/
         "mkdir -p {params.build} && latexmk -cd -pdf -interaction=nonstopmode -halt-on-error"
-        " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{'$(realpath {params.outdir})'}}'"
+        " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{../{params.outdir}}}'"
         " {input.tex} > {log} 2>&1"
         " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
+
+
+localrules:
+    all,
+    build_macros,
+    paper,

@@ -1,4 +1,4 @@
-# Tables and the numbers quoted in the manuscript (as LaTeX macros).
+# Tables, data files and the numbers quoted in the manuscript (as LaTeX macros).
 
 
 rule torque_table:
@@ -12,12 +12,14 @@ rule torque_table:
     params:
         radii=config["torque_table"]["stick_radii"],
         n=config["n_terms"],
+    log:
+        logfile("torque_table"),
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
         "python {input.script} --stick-radii {params.radii} --n-terms {params.n}"
-        " --csv {output.csv} --tex {output.tex} --macros {output.macros}"
+        " --csv {output.csv} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
 
 rule convergence_table:
@@ -30,11 +32,14 @@ rule convergence_table:
     params:
         b=config["convergence"]["stick_radius"],
         n=config["convergence"]["max_n_terms"],
+    log:
+        logfile("convergence_table"),
     resources:
         runtime=10,
         mem_mb=3000,
     shell:
-        "python {input.script} --stick-radius {params.b} --max-n {params.n} --json {output.json} --macros {output.macros}"
+        "python {input.script} --stick-radius {params.b} --max-n {params.n} --json {output.json}"
+        " --macros {output.macros} > {log} 2>&1"
 
 
 rule history_data:
@@ -48,50 +53,18 @@ rule history_data:
         n=config["history"]["n_terms"],
         fit_n=config["history"]["fit_n_terms"],
         points=config["history"]["n_points"],
+        t_max=config["history"]["t_max"],
+        stages=config["history"]["stages"],
+        loops=[t for pair in config["history"]["loops"] for t in pair],
+    log:
+        logfile("history_data"),
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
         "python {input.script} --n-terms {params.n} --fit-n-terms {params.fit_n} --n-points {params.points}"
-        " --json {output.json} --macros {output.macros}"
-
-
-rule errata_report:
-    input:
-        script="workflow/scripts/errata_report.py",
-        lib=lib("workflow/scripts/errata_report.py"),
-    output:
-        json=f"{OUT}/errata/errata.json",
-        md=f"{OUT}/errata/errata.md",
-        complete=f"{OUT}/errata/reference_complete.json",
-        published=f"{OUT}/errata/reference_published.json",
-    params:
-        radii=config["reference"]["stick_radii"],
-        n=config["reference"]["n_terms"],
-        digits=config["reference"]["digits"],
-        converged=config["reference"]["converged_n_terms"],
-        conditions=config["reference"]["condition_n_terms"],
-        out=f"{OUT}/errata",
-    resources:
-        runtime=20,
-        mem_mb=4000,
-    shell:
-        "OMP_NUM_THREADS=1 python {input.script} --out {params.out} --stick-radii {params.radii} --n-terms {params.n}"
-        " --digits {params.digits} --converged-n-terms {params.converged} --condition-n-terms {params.conditions}"
-
-
-rule errata_tables:
-    input:
-        script="workflow/scripts/errata_tables.py",
-        lib=lib("workflow/scripts/errata_tables.py"),
-        errata=f"{OUT}/errata/errata.json",
-        reference=f"{OUT}/errata/reference_complete.json",
-    output:
-        tex=f"{OUT}/tables/errata_table.tex",
-        macros=f"{OUT}/macros/errata.tex",
-    shell:
-        "python {input.script} --errata {input.errata} --reference {input.reference} --tex {output.tex}"
-        " --macros {output.macros}"
+        " --t-max {params.t_max} --stages {params.stages} --loops {params.loops}"
+        " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
 rule benchmark_speed_error:
@@ -107,14 +80,16 @@ rule benchmark_speed_error:
         nodes=config["benchmark"]["nodes"],
         repeats=config["benchmark"]["repeats"],
         digits=config["benchmark"]["reference_digits"],
-    threads: 2  # runs alone: timings are not disturbed by a parallel job
+    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    log:
+        logfile("benchmark_speed_error"),
     resources:
         runtime=15,
         mem_mb=3000,
     shell:
-        "OMP_NUM_THREADS=1 python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
+        "python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
         " --nodes {params.nodes} --repeats {params.repeats} --reference-digits {params.digits}"
-        " --json {output.json} --macros {output.macros}"
+        " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
 rule benchmark_scenes:
@@ -131,8 +106,13 @@ rule benchmark_scenes:
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
-    threads: 2  # runs alone: timings are not disturbed by a parallel job
+    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    log:
+        logfile("benchmark_scenes"),
+    resources:
+        runtime=10,
+        mem_mb=2000,
     shell:
-        "OMP_NUM_THREADS=1 python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
+        "python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
         " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
-        " --json {output.json} --tex {output.tex} --macros {output.macros}"
+        " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"

@@ -18,10 +18,12 @@ import warnings
 
 import numpy as np
 
-from torsional_contact import fields, reference, solve
-from torsional_contact.fast import default_nodes, solve_fast
-from torsional_contact.formulations import solve_series
-from torsional_contact.output import latex_escape, write_json, write_macros
+from torsional_contact import fields, solve
+from torsional_contact.diagnostics import TorsionalContactWarning
+from torsional_contact.provenance import latex_escape, write_json, write_macros
+from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
+from torsional_contact.solvers.weak_form import solve_series
+from torsional_contact.verification import reference
 
 
 def _median_time(function, repeats, budget=2.0):
@@ -54,7 +56,7 @@ def benchmark(b, n_terms_list, nodes_list, repeats, r_grid):
     for method in ("published", "complete"):
         for n in n_terms_list:
             with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
+                warnings.simplefilter("ignore", TorsionalContactWarning)
                 seconds, count, s = _median_time(lambda m=method, n=n: solve_series(b, m, n), repeats)
             lam = s.eigenvalues
             q = s.torque * r_grid - fields.series_sum(1, lam, s.amplitudes * lam, r_grid, 0.0, 0.0)
@@ -100,14 +102,14 @@ def reference_sweep(b, digits_list, n_terms, exact_torque, exact_omega):
 
 
 def targets(repeats):
-    """The issue's speed targets, measured: per-radius time over b in [0.02, 0.98], a curve of
+    """The speed targets, measured: per-radius time over b in [0.02, 0.98], a curve of
     200 radii, the inverse problem; with the complete formulation (N = 145) as baseline."""
     radii = np.linspace(0.02, 0.98, 49)
     per_radius = [_median_time(lambda b=b: solve_fast(b), repeats)[0] for b in radii]
     curve = np.linspace(0.005, 0.995, 200)
     fast_curve = _median_time(lambda: [solve_fast(b).torque for b in curve], 3, budget=10)[0]
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+        warnings.simplefilter("ignore", TorsionalContactWarning)
         series_curve = _median_time(lambda: [solve_series(b, "complete", 145).torque for b in curve], 3,
                                     budget=10)[0]
     solve(torque=1.2)  # builds the once-per-process bracket table, timed separately below

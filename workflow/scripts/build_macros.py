@@ -5,20 +5,25 @@ import os
 import platform
 from importlib import metadata
 
-from torsional_contact.output import latex_escape, write_macros
+from torsional_contact.provenance import latex_escape, write_macros
+
+#: How the manuscript names the method of the field figures.
+METHOD_NAMES = {"fast": "Abel--Fredholm method", "complete": "complete weak form, $N = {n}$",
+                "published": "published weak form (38), $N = {n}$"}
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n-terms", type=int, required=True)
     p.add_argument("--method", required=True)
-    p.add_argument("--outdir", required=True)
+    p.add_argument("--contour-stick-radius", type=float, required=True)
     p.add_argument("--output", required=True)
     a = p.parse_args()
     versions = {name: metadata.version(name) for name in ("numpy", "scipy", "mpmath", "matplotlib", "snakemake")}
     write_macros(a.output, {
         "n-terms": a.n_terms,
-        "figure-method": latex_escape(a.method),
+        "figure-method": METHOD_NAMES[a.method].format(n=a.n_terms),
+        "contour-b": f"{a.contour_stick_radius:g}",
         "python-version": platform.python_version(),
         **{f"version-{k}": latex_escape(v) for k, v in versions.items()},
         "machine": latex_escape(f"{platform.system()} {platform.machine()}, {os.cpu_count()} cores"),

@@ -7,8 +7,8 @@ import argparse
 
 import numpy as np
 
-from torsional_contact.convergence import format_table, n_terms_study
-from torsional_contact.output import write_json, write_macros
+from torsional_contact.provenance import write_json, write_macros
+from torsional_contact.verification.convergence import format_table, n_terms_study
 
 
 def main():

@@ -9,14 +9,15 @@ import warnings
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.formulations import resolution_limit
-from torsional_contact.output import provenance, write_text
-from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.diagnostics import UnphysicalResultWarning
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.provenance import provenance, write_text
+from torsional_contact.solvers.weak_form import resolution_limit
 
 
 def curve(method, n_terms, radii):
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)  # published T* > 4/3: plotted, not hidden
+        warnings.simplefilter("ignore", UnphysicalResultWarning)  # published T* > 4/3: plotted, not hidden
         return np.array([solve(stick_radius=b, method=method, n_terms=n_terms).torque for b in radii])
 
 

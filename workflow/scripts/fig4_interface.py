@@ -5,7 +5,7 @@
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 LABELS = {
     "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",

@@ -6,7 +6,7 @@ Reads the history data (workflow/scripts/history_data.py); computes nothing itse
 
 import numpy as np
 
-from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 
 def main():

@@ -5,7 +5,7 @@ Abel-Fredholm method (node sweep); reads the benchmark JSON."""
 
 import numpy as np
 
-from torsional_contact.plotting import figure_parser, load_data, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 FLOOR = 1e-16
 

@@ -2,14 +2,14 @@
 
 Left: slip s(r) (units f p0 a / mu); right: traction sigma_zt(r, 0) (units f p0).  The
 published solution slips backwards on the stick disc (u = alpha r, alpha < 0) and
-carries traction 1 - alpha r > 1 on the slip annulus (see formulations docstring).
+carries traction 1 - alpha r > 1 on the slip annulus (see the docstring of solvers/weak_form.py).
 """
 
 
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

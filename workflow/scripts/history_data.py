@@ -13,12 +13,12 @@ import warnings
 import numpy as np
 
 from torsional_contact import ResolutionWarning
-from torsional_contact import history as H
-from torsional_contact.output import write_json, write_macros
+from torsional_contact import histories as H
+from torsional_contact.provenance import write_json, write_macros
 
 
-def fig5(n_terms):
-    data = H.relaxation_profiles(1.23, (1.23, 0.9, 0.5, 0.0, -0.5, -0.77), np.linspace(0, 1, 201), n_terms=n_terms)
+def fig5(t_max, stages, n_terms):
+    data = H.relaxation_profiles(t_max, tuple(stages), np.linspace(0, 1, 201), n_terms=n_terms)
     residual = data["residual_traction"]
     peak = int(np.argmax(residual))
     return {
@@ -36,9 +36,9 @@ def fig5(n_terms):
     }
 
 
-def loops(n_terms, n_points):
+def loops(pairs, n_terms, n_points):
     out = []
-    for t_min, t_max in [(-1.1, 1.1), (-1.2, 1.2), (-1.3, 1.3), (-0.9, 1.25), (-1.3, 1.1), (0.2, 1.3)]:
+    for t_min, t_max in pairs:
         loop = H.hysteresis_loop(t_min, t_max, n_points=n_points, n_terms=n_terms)
         out.append(
             {
@@ -92,13 +92,16 @@ def main():
     p.add_argument("--n-terms", type=int, default=145)
     p.add_argument("--fit-n-terms", type=int, default=400, help="N for the threshold fit (narrow annuli)")
     p.add_argument("--n-points", type=int, default=40, help="states per slipping stretch of a loop")
+    p.add_argument("--t-max", type=float, required=True, help="Fig. 5: T* of the first loading")
+    p.add_argument("--stages", type=float, nargs="+", required=True, help="Fig. 5: T* of the relaxation stages")
+    p.add_argument("--loops", type=float, nargs="+", required=True, help="loops: T*_min T*_max pairs")
     p.add_argument("--json", required=True)
     p.add_argument("--macros", help="LaTeX macros of the quoted numbers")
     a = p.parse_args()
     start = time.perf_counter()
     payload = {
-        "fig5": fig5(a.n_terms),
-        "loops": loops(a.n_terms, a.n_points),
+        "fig5": fig5(a.t_max, a.stages, a.n_terms),
+        "loops": loops(list(zip(a.loops[::2], a.loops[1::2], strict=True)), a.n_terms, a.n_points),
         "dissipation_law": dissipation_law(a.fit_n_terms),
         "compliance": compliance(a.n_terms),
         "units": {

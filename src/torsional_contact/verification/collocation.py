@@ -1,11 +1,11 @@
-r"""Independent check of ``fast``: collocation of the first-kind stick equation.
+r"""Independent check of the Abel-Fredholm method: collocation of the first-kind stick equation.
 
-Units (CONTRACT.md): r, rho in a; tractions in f p0; omega in f p0 / mu.
+Units (docs/conventions.md): r, rho in a; tractions in f p0; omega in f p0 / mu.
 
 Method
 ------
 No Abel transform: the stick condition is imposed on the displacement itself, with the
-cylinder's Dini kernel in the closed form (K4) of ``kernels``,
+cylinder's Dini kernel in the closed form (K4) of ``solvers.kernels``,
 
     int_0^1 G(r, rho) q(rho) rho drho = omega r,   0 < r < b,
     G = G_hs + G_c - 4 BETA r rho,                                              (D1)
@@ -28,7 +28,7 @@ The kernel integrals are computed by brute force: composite Gauss-Legendre grade
 geometrically toward the logarithmic singularity of G_hs at rho = r and the square-root
 end point rho = b, with G_hs from complete elliptic integrals and G_c by its own
 xi-quadrature (``kernels.cylinder_kernel``, I1-based, not the sinh-based kernels that
-``fast`` uses).  Slow (several seconds per radius) and meant for verification.
+``solvers.abel_fredholm`` uses).  Slow (several seconds per radius) and meant for verification.
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.polynomial import chebyshev, legendre
 
-from . import kernels
+from ..solvers import kernels
 
 __all__ = ["DirectSolution", "solve_direct"]
 

@@ -1,4 +1,8 @@
-"""Figure output for the workflow: vector PDF plus PNG preview, written atomically."""
+"""Figure output for the workflow: vector PDF plus PNG preview, written atomically.
+
+Matplotlib chooses a non-interactive backend by itself when there is no display; this module
+does not change the backend of an interactive session that imports it.
+"""
 
 from __future__ import annotations
 
@@ -6,12 +10,9 @@ import argparse
 import json
 import os
 
-import matplotlib
+import matplotlib.pyplot as plt
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from .output import atomic_path  # noqa: E402
+from ..provenance import atomic_path
 
 __all__ = ["use_style", "save_figure", "figure_parser", "load_data", "plt"]
 

@@ -1,4 +1,4 @@
-"""Convergence of the weak-form solutions with the number of terms N (issue 2).
+"""Convergence of the weak-form solutions with the number of terms N.
 
 Without an exact solution the observed order p comes from successive differences at
 doubling N: if Q(N) = Q + C N^-p, then |Q(N) - Q(N/2)| / |Q(2N) - Q(N)| = 2^p.
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .solution import solve
+from ..solution import solve
 
 __all__ = ["n_terms_study", "format_table"]
 

@@ -1,13 +1,13 @@
 r"""Kernels of the semi-infinite cylinder in torsion and their Abel transforms.
 
-Units (CONTRACT.md): lengths in a, tractions in f p0, displacements in f p0 a / mu.
+Units (docs/conventions.md): lengths in a, tractions in f p0, displacements in f p0 a / mu.
 All functions are vectorised over their array arguments.
 
 Neumann-to-Dirichlet map of the cylinder
 ----------------------------------------
 For a face traction q(r) = du/dz (r, 0) on the cylinder z >= 0, 0 <= r <= 1 with a
 traction-free side (eq. 9), write q = T* r + q_C with the torque-free part q_C
-(int_0^1 q_C r^2 dr = 0).  The Dini series of ``formulations`` (c_n lam_n h_n =
+(int_0^1 q_C r^2 dr = 0).  The Dini series of ``solvers.weak_form`` (c_n lam_n h_n =
 -(q_C, J1(lam_n r)), h_n = J1(lam_n)^2 / 2, eq. 26, 34, 35) gives
 
     u(r, 0) = omega r - int_0^1 G(r, rho) q_C(rho) rho drho,

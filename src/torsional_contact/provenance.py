@@ -22,6 +22,12 @@ def provenance(**fields) -> dict:
             versions[name] = _metadata.version(name)
         except _metadata.PackageNotFoundError:
             versions[name] = None
+    try:
+        import mpmath
+
+        versions["mpmath_backend"] = mpmath.libmp.BACKEND
+    except ImportError:  # pragma: no cover - mpmath is a dependency
+        versions["mpmath_backend"] = None
     return {
         **fields,
         "packages": versions,

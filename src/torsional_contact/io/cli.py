@@ -1,4 +1,4 @@
-"""Command line: ``python -m torsional_contact <subcommand> ...`` (CONTRACT.md).
+"""Command line: ``python -m torsional_contact <subcommand> ...`` (docs/conventions.md).
 
 Bad input exits with status 2 and one line on standard error; nothing is printed
 on standard output.  Accuracy warnings are printed as one line each on stderr.
@@ -14,9 +14,9 @@ import warnings
 
 import numpy as np
 
-from . import __version__
-from .formulations import METHODS as SERIES_METHODS
-from .solution import DEFAULT_N_TERMS, METHODS, solve
+from .. import __version__
+from ..solution import DEFAULT_N_TERMS, METHODS, solve
+from ..solvers.weak_form import METHODS as SERIES_METHODS
 
 __all__ = ["main", "build_parser"]
 
@@ -52,9 +52,10 @@ def _cmd_solve(args) -> dict:
 
 
 def _cmd_history(args) -> list:
-    from .history import history, validate_torques
+    from .. import validation
+    from ..histories import history
 
-    torques = validate_torques("--turning-points", args.turning_points)
+    torques = validation.torque_sequence("--turning-points", args.turning_points)
     states = history(torques, method=args.method, n_terms=args.n_terms)
     fields = ("traction", "slip", "residual_traction")
     return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
@@ -66,8 +67,8 @@ _MAX_REFERENCE_DIGITS = 1000
 def _cmd_reference(args) -> dict:
     import mpmath
 
-    from . import validation
-    from .reference import solve_reference
+    from .. import validation
+    from ..verification.reference import solve_reference
 
     text = args.stick_radius
     try:
@@ -100,7 +101,7 @@ def _cmd_reference(args) -> dict:
 
 
 def _cmd_errata(args) -> list:
-    from .errata import errata_table
+    from ..verification.errata import errata_table
 
     return errata_table()
 

@@ -40,7 +40,6 @@ from scipy import special
 __all__ = [
     "dini_norm",
     "integral_t_j1",
-    "moment_r2_j1",
     "stick_moment",
     "load_integral_linear",
     "load_integral_constant",
@@ -91,15 +90,6 @@ def integral_t_j1(x):
     xl = x[large]
     out[large] = special.itj0y0(xl)[0] - xl * special.j0(xl)
     return out
-
-
-def moment_r2_j1(lam, lower, upper):
-    """int_lower^upper r^2 J1(lam r) dr = [r^2 J2(lam r) / lam] from lower to upper.
-
-    Valid for any lam > 0 (no use of J2(lam) = 0).
-    """
-    lam = np.asarray(lam, dtype=float)
-    return (upper**2 * special.jv(2, lam * upper) - lower**2 * special.jv(2, lam * lower)) / lam
 
 
 def stick_moment(lam, b):

@@ -1,11 +1,11 @@
-r"""Direct weak-form solver of a general mixed interface problem (independent check of ``history``).
+r"""Direct weak-form solver of a general mixed interface problem (independent check of ``histories``).
 
-Units (CONTRACT.md): r in a; tractions in f p0; displacements in f p0 a / mu; torque
+Units (docs/conventions.md): r in a; tractions in f p0; displacements in f p0 a / mu; torque
 T* = 2T/(f F a); omega in f p0 / mu.
 
 Problem
 -------
-Find the interface state of the upper cylinder, written as in ``formulations`` as
+Find the interface state of the upper cylinder, written as in ``solvers.weak_form`` as
 
     u(r, 0) = omega r + sum_n c_n J1(lam_n r),        J2(lam_n) = 0,          (i)
     q(r)    = T* r - sum_n c_n lam_n J1(lam_n r),                             (ii)
@@ -18,14 +18,14 @@ Find the interface state of the upper cylinder, written as in ``formulations`` a
 The paper's monotonic problem (7)-(8) is g = 0, p = 1, c = b.  An unloading step of a
 torque history is g = the interface displacement remembered from the previous turning
 point (the points of 0 <= r < c do not slip during the step) and p = -1 (the friction
-limit reversed); this is the problem ``history`` avoids by superposition, and the
+limit reversed); this is the problem ``histories`` avoids by superposition, and the
 reason this module exists: it solves the incremental problem directly, without the
 memory rules.
 
 Weak form
 ---------
 Testing the residual (u - g on (0, c), q - p on (c, 1)) against J1(lam_m r) r and
-against r r, exactly as eq. (33) and the ``complete`` form of ``formulations``
+against r r, exactly as eq. (33) and the ``complete`` form of ``solvers.weak_form``
 (iii)-(iv), gives for x = (c_1..c_N, omega)
 
     c_m h_m + sum_n (lam_n - 1) I_mn c_n + omega S_m = T* L_m + G_m - P_m,
@@ -44,7 +44,7 @@ that nothing of the closed forms of eq. (51) is reused.
 
 Regularity
 ----------
-For given c the solution is linear in T*; as in condition (v) of ``formulations`` the
+For given c the solution is linear in T*; as in condition (v) of ``solvers.weak_form`` the
 torque is fixed by requiring that the stick-side traction reaches the prescribed
 traction continuously at r = c:  q(c) = T* c - sum c_n lam_n J1(lam_n c) = p(c).
 ``solve_mixed_for_torque`` inverts T*(c) for a prescribed torque by Brent's method.
@@ -52,23 +52,21 @@ traction continuously at r = c:  q(c) = T* c - sum c_n lam_n J1(lam_n c) = p(c).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import optimize, special
 
-from . import integrals
-from .formulations import equilibrated_solve
-from .zeros import bessel_j2_zeros
+from ..quadrature import gauss_legendre_panels
+from ..solvers.equilibration import equilibrated_solve
+from ..special import integrals
+from ..special.zeros import bessel_j2_zeros
 
-__all__ = ["MixedSolution", "gauss_legendre_panels", "solve_mixed", "solve_mixed_for_torque"]
+__all__ = ["MixedSolution", "solve_mixed", "solve_mixed_for_torque"]
 
 #: Largest panel width times lam_N of the composite Gauss-Legendre rule.
 _PANEL_WAVES = 20.0
-#: Nodes per panel (exact for polynomials of degree 2 * 32 - 1 on each panel).
-_PANEL_NODES = 32
 
 
 @dataclass(frozen=True)
@@ -110,32 +108,6 @@ class MixedSolution:
         r = np.asarray(r, dtype=float)
         lam = self.eigenvalues
         return self.torque * r - special.j1(np.multiply.outer(r, lam)) @ (self.amplitudes * lam)
-
-
-def gauss_legendre_panels(lower: float, upper: float, max_width: float, breakpoints: Sequence[float] = ()):
-    """Nodes and weights of a composite Gauss-Legendre rule on [lower, upper].
-
-    The interval is first split at the ``breakpoints`` inside it, then every piece
-    into equal panels no wider than ``max_width``, each with 32 nodes.
-
-    Returns
-    -------
-    (nodes, weights) : tuple of ndarray
-        Empty arrays when upper <= lower.
-    """
-    if upper <= lower:
-        return np.empty(0), np.empty(0)
-    cuts = sorted({lower, upper, *(float(x) for x in breakpoints if lower < x < upper)})
-    x_ref, w_ref = np.polynomial.legendre.leggauss(_PANEL_NODES)
-    nodes, weights = [], []
-    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
-        n_panels = max(1, math.ceil((b - a) / max_width))
-        edges = np.linspace(a, b, n_panels + 1)
-        half = 0.5 * np.diff(edges)
-        mid = 0.5 * (edges[:-1] + edges[1:])
-        nodes.append((mid[:, None] + half[:, None] * x_ref[None, :]).ravel())
-        weights.append((half[:, None] * w_ref[None, :]).ravel())
-    return np.concatenate(nodes), np.concatenate(weights)
 
 
 def _data_integrals(func, lam, lower, upper, breakpoints):

@@ -1,6 +1,6 @@
 r"""The weak form of the dual series equations: eq. (38) as published, and completed.
 
-Units: lengths in a, tractions in f p0, displacements in f p0 a / mu (CONTRACT.md).
+Units: lengths in a, tractions in f p0, displacements in f p0 a / mu (docs/conventions.md).
 
 Field representation
 --------------------
@@ -58,7 +58,7 @@ Regularity: fixing T* for a given b
 For a given b, (iii)-(iv) have a solution for every T*; it is linear in T*.  The
 exact solution of the mixed problem has a stick-side traction singularity
 K (b - r)^(-1/2) at r = b unless T* takes one value, T*(b), at which the traction
-rises continuously to the friction limit (CONTRACT.md).  We impose this as
+rises continuously to the friction limit (docs/conventions.md).  We impose this as
 continuity of the truncated traction series at r = b:
 
     sigma_zt(b, 0) = T* b - sum_n c_n lam_n J1(lam_n b) = 1,                  (v)
@@ -82,13 +82,15 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import linalg, special
+from scipy import special
 
-from . import integrals
-from .warnings import IllConditioningWarning, ResolutionWarning
-from .zeros import bessel_j2_zeros
+from ..criteria import GROSS_SLIP_TORQUE
+from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
+from ..special import integrals
+from ..special.zeros import bessel_j2_zeros
+from .equilibration import equilibrated_solve
 
-__all__ = ["METHODS", "SeriesSolution", "solve_series", "assemble", "resolution_limit", "equilibrated_solve"]
+__all__ = ["METHODS", "SeriesSolution", "solve_series", "assemble", "resolution_limit"]
 
 METHODS = ("published", "complete")
 
@@ -99,7 +101,6 @@ RESOLUTION_WAVELENGTHS = 10.0
 #: Reciprocal condition number below which the solve warns.
 RCOND_WARN = 1e-13
 
-GROSS_SLIP_TORQUE = 4.0 / 3.0
 
 
 @dataclass(frozen=True)
@@ -135,11 +136,6 @@ class SeriesSolution:
     @property
     def n_terms(self) -> int:
         return int(self.eigenvalues.size)
-
-    @property
-    def paper_coefficients(self) -> np.ndarray:
-        """A~_n of eq. (31) (a = 1): c_n / lam_n."""
-        return self.amplitudes / self.eigenvalues
 
 
 def resolution_limit(n_terms: int) -> tuple[float, float]:
@@ -177,19 +173,6 @@ def assemble(method: str, lam: np.ndarray, b: float):
     return full, rhs_torque, rhs_constant
 
 
-def equilibrated_solve(matrix, rhs):
-    """LU solve after row and column scaling to unit max-norm; returns (x, rcond)."""
-    row = 1.0 / np.max(np.abs(matrix), axis=1)
-    scaled = matrix * row[:, None]
-    col = 1.0 / np.max(np.abs(scaled), axis=0)
-    scaled *= col[None, :]
-    lu, piv = linalg.lu_factor(scaled, check_finite=True)
-    anorm = np.max(np.sum(np.abs(scaled), axis=0))
-    rcond, _ = linalg.lapack.dgecon(lu, anorm, norm="1")
-    x = linalg.lu_solve((lu, piv), rhs * row[:, None])
-    return x * col[:, None], float(rcond)
-
-
 def _gross_slip(method: str, lam: np.ndarray) -> SeriesSolution:
     """b = 0: traction 1 everywhere; (iii) is diagonal, c_m lam_m h_m = B_m."""
     load = integrals.load_vector(lam, 0.0, GROSS_SLIP_TORQUE)
@@ -220,7 +203,7 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
         If the stick disc or slip annulus is narrower than 10 / lam_N.
     IllConditioningWarning
         If the reciprocal condition number of the equilibrated system is below 1e-13.
-    RuntimeWarning
+    UnphysicalResultWarning
         If the published formulation returns T* > 4/3 (physically impossible).
     """
     b = float(stick_radius)
@@ -263,7 +246,7 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
             f"the published formulation gives T* = {torque:.6g} > 4/3 at stick_radius={b:.6g}: "
             "physically impossible (torque above spinning); a consequence of the missing "
             "rigid-rotation mode (see the errata)",
-            RuntimeWarning,
+            UnphysicalResultWarning,
             stacklevel=3,
         )
     return SeriesSolution(method, b, float(torque), omega, lam, coeffs[:n].copy(), rcond)

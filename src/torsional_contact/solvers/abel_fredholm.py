@@ -1,6 +1,6 @@
 r"""Fast, high-accuracy partial-slip solution: Abel reduction to a Fredholm equation.
 
-Units (CONTRACT.md): r, t, s in a; tractions in f p0; displacements and slip in
+Units (docs/conventions.md): r, t, s in a; tractions in f p0; displacements and slip in
 f p0 a / mu; omega in f p0 / mu; T* = 2T/(f F a) (eq. 32).
 
 Problem
@@ -8,7 +8,7 @@ Problem
 The upper cylinder carries u = T* r z + omega r + (Dini series, eq. 22); at z = 0 the
 traction q(r) = du/dz satisfies q = 1 on the slip annulus b < r <= 1 (eq. 8) and
 u(r, 0) = 0 on the stick disc 0 <= r < b (eq. 7).  With the Neumann-to-Dirichlet map
-of ``kernels`` (K1-K3) and int_0^1 K(r, rho) rho^2 drho = BETA r, the stick condition
+of ``solvers.kernels`` (K1-K3) and int_0^1 K(r, rho) rho^2 drho = BETA r, the stick condition
 for the torque-free part q - T* r reads
 
     int_0^1 K(r, rho) q(rho) rho drho = Omega r,   0 <= r < b,   Omega = omega + BETA T*.   (F1)
@@ -18,7 +18,7 @@ Abel reduction
 Let G(t) = int_t^1 q(rho) / sqrt(rho^2 - t^2) drho (eq. A1).  On t > b, G = arcsech(t)
 (q = 1 there).  Write g(t) = int_t^b q / sqrt(rho^2 - t^2) drho = G(t) - L(t) for
 t < b, L(t) = ln[(1 + sqrt(1 - t^2)) / (b + sqrt(b^2 - t^2))].  Applying S^{-1}
-(``kernels``) to (F1) gives a Fredholm equation of the second kind on (0, b) with
+(``solvers.kernels``) to (F1) gives a Fredholm equation of the second kind on (0, b) with
 the smooth kernel P of eq. (A2) (Copson; Sneddon's treatment of the Reissner-Sagoci
 problem):
 
@@ -27,7 +27,7 @@ problem):
 
 (The half-space kernel turns into the identity: S^{-1}[G_hs q] = t G(t).)  A
 traction with a K (b - r)^(-1/2) singularity at r = b has g(b) = pi K / sqrt(2 b);
-the regular solution (CONTRACT.md: the stick-side traction rises continuously to 1)
+the regular solution (the stick-side traction rises continuously to 1)
 is fixed by
 
     g(b) = 0,                                                                       (F3)
@@ -42,7 +42,7 @@ by parts against the Abel inverse q = -(2/pi) d/drho int_rho^1 s G(s) / sqrt(s^2
     u(r, 0) = (2/(pi r)) int_b^r t D(t) / sqrt(r^2 - t^2) dt,          r > b,       (F7)
     D(t) = 2 Omega t - t arcsech(t) - (2/pi) int_0^b s g(s) P(t, s) ds - R(t),
 
-and s(r) = 2 u(r, 0) (CONTRACT.md).  D(b) = b g(b) = 0, so the slip starts like
+and s(r) = 2 u(r, 0) (docs/conventions.md).  D(b) = b g(b) = 0, so the slip starts like
 (r - b)^(3/2).  The Dini amplitudes of the corrective field (eq. 22, c_n = lam_n A~_n)
 follow from (q, J1(lam_n r)) = (2/pi) int_0^b s g(s) sin(lam_n s) ds +
 int_b^1 r J1(lam_n r) dr:  c_n = -(q, J1(lam_n r)) / (lam_n h_n), h_n = J1(lam_n)^2/2.
@@ -63,18 +63,20 @@ removes the inverse square root at t = r.
 
 from __future__ import annotations
 
-import functools
 import math
 import warnings
 from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
-from numpy.polynomial import chebyshev, legendre
+from numpy.polynomial import chebyshev
 
-from . import integrals, kernels
-from .warnings import ResolutionWarning
-from .zeros import bessel_j2_zeros
+from ..criteria import GROSS_SLIP_TORQUE
+from ..diagnostics import ResolutionWarning
+from ..quadrature import gauss_legendre
+from ..special import integrals
+from ..special.zeros import bessel_j2_zeros
+from . import kernels
 
 __all__ = ["FastSolution", "solve_fast", "default_nodes", "MAX_NODES"]
 
@@ -120,16 +122,8 @@ def _chebyshev_points(b: float) -> int:
     return math.ceil(_TARGET_DIGITS / math.log(rho)) + 4
 
 
-@functools.lru_cache(maxsize=64)
-def _gauss(n: int):
-    x, w = legendre.leggauss(n)
-    x.flags.writeable = False
-    w.flags.writeable = False
-    return x, w
-
-
 def _gauss_theta(n: int):
-    x, w = _gauss(n)
+    x, w = gauss_legendre(n)
     return np.pi / 4.0 * (x + 1.0), np.pi / 4.0 * w
 
 
@@ -189,7 +183,7 @@ class FastSolution:
         inside = flat < b
         rho = flat[inside]
         if rho.size:
-            y_nodes, y_weights = _gauss(self.n_nodes)
+            y_nodes, y_weights = gauss_legendre(self.n_nodes)
             height = np.sqrt((b - rho) * (b + rho))
             y = 0.5 * height[:, None] * (y_nodes[None, :] + 1.0)
             x = 2.0 * (rho[:, None] ** 2 + y * y) / (b * b) - 1.0
@@ -238,7 +232,7 @@ class FastSolution:
         flat = r.ravel()
         out = np.zeros_like(flat)
         psi_b = math.acos(b)
-        x_nodes, x_weights = _gauss(_SLIP_PANEL_NODES)
+        x_nodes, x_weights = gauss_legendre(_SLIP_PANEL_NODES)
         all_psi, all_weight, owner = [], [], []
         for index in np.nonzero(flat > b)[0]:
             radius = float(flat[index])
@@ -282,7 +276,7 @@ class FastSolution:
         return out.reshape(r.shape)
 
     def interface_slip(self, r):
-        """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (CONTRACT.md); 0 for r <= b."""
+        """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (docs/conventions.md); 0 for r <= b."""
         return 2.0 * self.interface_displacement(r)
 
     # -- Dini amplitudes ----------------------------------------------------------------
@@ -311,7 +305,7 @@ class FastSolution:
             return -integrals.load_integral_constant(lam, 0.0) / (lam * integrals.dini_norm(lam))
         # composite 32-point Gauss in theta, at most DINI_PHASE rad of phase per panel
         panels = max(4, math.ceil(lam[-1] * b / DINI_PHASE))
-        x, w = _gauss(32)
+        x, w = gauss_legendre(32)
         edges = np.linspace(0.0, 0.5 * np.pi, panels + 1)
         half = 0.5 * np.diff(edges)
         theta = (half[:, None] * (x[None, :] + 1.0) + edges[:-1, None]).ravel()
@@ -323,10 +317,24 @@ class FastSolution:
 
 
 def _limit_solution(b: float) -> FastSolution:
+    """b = 1 (slip onset: T* = 1, omega = 0) or b = 0 (spinning: T* = 4/3, omega = +inf)."""
     empty = np.zeros(0)
-    if b == 1.0:
-        return FastSolution(1.0, 1.0, 0.0, 0, 0.0, empty, empty, empty, 0.0, empty, empty, np.zeros(1))
-    return FastSolution(0.0, 4.0 / 3.0, math.inf, 0, math.inf, empty, empty, empty, 0.0, empty, empty, np.zeros(1))
+    onset = b == 1.0
+    rotation = 0.0 if onset else math.inf
+    return FastSolution(
+        stick_radius=b,
+        torque=1.0 if onset else GROSS_SLIP_TORQUE,
+        rigid_rotation=rotation,
+        n_nodes=0,
+        rotation_constant=rotation,
+        nodes=empty,
+        weights=empty,
+        abel_density=empty,
+        resolution_estimate=0.0,
+        _xi=empty,
+        _xi_weights=empty,
+        _g_chebyshev=np.zeros(1),
+    )
 
 
 def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
@@ -397,7 +405,7 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
     g_b0 = -float(kernels.arcsech(b)) - r_side[n] / b - edge @ g[:, 1]
     omega_big = -g_b0 / g_b1
     density = omega_big * g[:, 0] + g[:, 1]
-    torque = 4.0 / 3.0 * (1.0 - b**3) + 16.0 / np.pi * np.sum(wt * t * t * density)
+    torque = GROSS_SLIP_TORQUE * (1.0 - b**3) + 16.0 / np.pi * np.sum(wt * t * t * density)
     rotation = omega_big - kernels.TORQUE_ROTATION * torque
 
     # G = g + L = 2 Omega - R(t)/t - (2/(pi t)) int_0^b s g P ds (Nystrom interpolant of

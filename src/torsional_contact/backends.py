@@ -1,0 +1,192 @@
+"""The solution backends behind ``Solution``: one small interface, one class per kind of solution.
+
+Every backend describes the state for a *positive* torque (``Solution`` mirrors it for a
+negative one) in the units of the package: r, z in a; tractions and stresses in f p0;
+displacements in f p0 a / mu; omega in f p0 / mu.  The interface is
+
+* ``stick_radius``, ``torque`` (T* > 0), ``rigid_rotation`` (omega of the displacement
+  field: 0 for the published weak form, which has no such unknown);
+* ``traction(r)``, ``displacement(r)``, ``sigma_rt(r)``: the interface values at z = 0
+  (eqs. 8, 25, 26 and sigma_rt = du/dr - u/r);
+* ``dini(z_min, tolerance)``: the eigenvalues lambda_n (zeros of J2) and amplitudes c_n of
+  the corrective field u = T* r z + omega r + sum c_n exp(-lambda_n z) J1(lambda_n r)
+  (eqs. 22-24) good for every z >= z_min > 0 to ``tolerance``, or ``None`` when there is
+  no corrective field (uniform twist);
+* ``metadata()``: resolution parameters for the JSON summary.
+
+Backends: ``Bilateral`` (stick, and slip annuli below the resolution with the traction capped
+at the friction limit), ``Series`` (the published and complete weak forms), ``AbelFredholm``
+(the default method) and ``Spinning`` (b = 0 by the Abel-Fredholm formulas).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import special
+
+from .fields import dini_terms
+from .solvers.abel_fredholm import FastSolution
+from .solvers.weak_form import SeriesSolution
+from .special.zeros import bessel_j2_zeros
+
+__all__ = ["Bilateral", "Series", "AbelFredholm", "Spinning", "DIFFERENCE_STEP"]
+
+#: Step of the central differences for sigma_rt(r, 0) of the Abel-Fredholm method.
+DIFFERENCE_STEP = 1e-5
+
+
+@dataclass(frozen=True)
+class Bilateral:
+    """Uniform twist u = T* r z + omega r (eqs. 2-4) with the traction capped at the friction limit.
+
+    Exact in stick (T* <= 1, omega = 0).  ``Solution`` also uses it for a slip annulus too
+    narrow to resolve, with omega from the small-slip asymptotes: the traction min(T* r, 1)
+    is then off by at most T* - 1 and the slip (taken as 0) by O((T* - 1)^2).
+    """
+
+    torque: float
+    rigid_rotation: float = 0.0
+    stick_radius: float = 1.0
+
+    def traction(self, r):
+        return np.minimum(self.torque * r, 1.0)
+
+    def displacement(self, r):
+        return np.zeros_like(r)
+
+    def sigma_rt(self, r):
+        return np.zeros_like(r)
+
+    def dini(self, z_min, tolerance):
+        return None
+
+    def metadata(self) -> dict:
+        return {}
+
+
+@dataclass(frozen=True)
+class Series:
+    """The truncated weak form (published or complete) at N terms: sums of eqs. (25), (26)."""
+
+    solution: SeriesSolution
+
+    @property
+    def stick_radius(self) -> float:
+        return self.solution.stick_radius
+
+    @property
+    def torque(self) -> float:
+        return self.solution.torque
+
+    @property
+    def rigid_rotation(self) -> float:
+        omega = self.solution.rigid_rotation
+        return 0.0 if self.solution.method == "published" else omega
+
+    def _bessel(self, order, r):
+        lam = self.solution.eigenvalues
+        x = np.multiply.outer(r, lam)
+        return special.j1(x) if order == 1 else special.jv(2, x)
+
+    def traction(self, r):
+        s = self.solution
+        return s.torque * r - self._bessel(1, r) @ (s.amplitudes * s.eigenvalues)
+
+    def displacement(self, r):
+        return self.rigid_rotation * r + self._bessel(1, r) @ self.solution.amplitudes
+
+    def sigma_rt(self, r):
+        s = self.solution
+        return -(self._bessel(2, r) @ (s.amplitudes * s.eigenvalues))
+
+    def dini(self, z_min, tolerance):
+        return self.solution.eigenvalues, self.solution.amplitudes
+
+    def metadata(self) -> dict:
+        return {"rcond": self.solution.rcond}
+
+
+@dataclass(frozen=True)
+class AbelFredholm:
+    """The Abel-Fredholm solution (``solvers.abel_fredholm``): exact interface values, Dini fields off it.
+
+    The Dini amplitudes for z > 0 are computed from the method's traction with as many
+    terms as ``fields.dini_terms`` asks for (powers of two, cached), unless ``n_terms``
+    fixes them.
+    """
+
+    solution: FastSolution
+    n_terms: int | None = None
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def stick_radius(self) -> float:
+        return self.solution.stick_radius
+
+    @property
+    def torque(self) -> float:
+        return self.solution.torque
+
+    @property
+    def rigid_rotation(self) -> float:
+        return self.solution.rigid_rotation
+
+    def traction(self, r):
+        return self.solution.interface_traction(r)
+
+    def displacement(self, r):
+        return self.solution.interface_displacement(r)
+
+    def sigma_rt(self, r):
+        """du/dr - u/r of the interface displacement by second-order differences (0 on the stick disc).
+
+        Central differences inside the slip annulus, one-sided ones within the step of r = b
+        or r = 1 (~1e-9; ~1e-5 within 1e-4 of r = 1, where the corner makes u less smooth);
+        exactly 0 at r = 1 (traction-free side, eq. 9).
+        """
+        out = np.zeros_like(r)
+        b = self.stick_radius
+        slipping = r > b
+        x = r[slipping]
+        if x.size:
+            h = min(DIFFERENCE_STEP, 0.25 * (1.0 - b))
+            u = self.solution.interface_displacement
+            ux = u(x)
+            derivative = np.empty_like(x)
+            central = (x - h >= b) & (x + h <= 1.0)
+            forward = (x - h < b) & ~central
+            backward = ~central & ~forward
+            xc, xf, xb = x[central], x[forward], x[backward]
+            derivative[central] = (u(xc + h) - u(xc - h)) / (2 * h)
+            derivative[forward] = (-3 * ux[forward] + 4 * u(xf + h) - u(xf + 2 * h)) / (2 * h)
+            derivative[backward] = (3 * ux[backward] - 4 * u(xb - h) + u(xb - 2 * h)) / (2 * h)
+            out[slipping] = derivative - ux / x
+        out[r == 1.0] = 0.0
+        return out
+
+    def dini(self, z_min, tolerance):
+        n = self.n_terms if self.n_terms is not None else dini_terms(z_min, tolerance)
+        if n not in self._cache:
+            self._cache[n] = (bessel_j2_zeros(n), self.solution.dini_amplitudes(n))
+        return self._cache[n]
+
+    def metadata(self) -> dict:
+        return {"n_nodes": self.solution.n_nodes}
+
+
+@dataclass(frozen=True)
+class Spinning(AbelFredholm):
+    """b = 0, T* = 4/3: traction 1 everywhere, unbounded relative rotation (omega = +inf).
+
+    Stresses are finite; the displacement and slip are infinite for r > 0.
+    """
+
+    def displacement(self, r):
+        return np.where(r > 0, math.inf, 0.0)
+
+    def sigma_rt(self, r):
+        lam, amplitudes = self.dini(0.0, 0.0)
+        return -(special.jv(2, np.multiply.outer(r, lam)) @ (amplitudes * lam))

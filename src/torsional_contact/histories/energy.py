@@ -1,0 +1,191 @@
+r"""Frictional work, dissipation per cycle and slip records of torque histories.
+
+Units: energies in (f p0)^2 a^3 / mu; slip in f p0 a / mu; T* = 2T/(f F a).
+
+Energy
+------
+The torque does work T dphi on the relative rotation phi = 2 omega f p0 / mu of the
+far ends beyond the uniform twist (the lower cylinder rotates by -omega), and
+T = pi a^3 f p0 T* / 2, so the work per cycle is
+
+    W = pi * oint T* d omega          [(f p0)^2 a^3 / mu].
+
+The frictional work is int over the cycle of int_0^a sigma_zt ds 2 pi r dr, i.e.
+
+    W = 2 pi * oint int_0^1 q(r) ds(r) r dr,
+
+and with q = +-1 on the slip annulus of each branch and slip monotonic on a branch,
+W(A) = 8 pi int_0^1 s_m(r; A/2) r dr for a loop of range A (Masing: independent of
+the mean torque).  Just above the cyclic-slip threshold, A = 2 (1 + eps): the slip
+annulus is an edge crack of depth delta = 1 - b in anti-plane shear (the free
+surface r = 1 reflects it into a centre crack of length 2 delta) loaded by
+T* (1 - x) - 1 ~ eps - x; a bounded (K_III = 0) tip needs delta = pi eps / 2, the slip
+is O(delta^2), and by reciprocity with the uniform load (crack opening 2 sqrt(delta^2
+- x^2) per unit load, mu = 1) int s dx = 2 int (eps - |x|) sqrt(delta^2 - x^2) dx =
+pi^3 eps^3 / 12 over the reflected crack.  Betti with the uniform twist gives
+omega = 2 int_0^1 s r^2 dr ~ int s dx and W = 8 pi int s_m r dr ~ 4 pi int s dx.
+Hence near the onset
+
+    1 - b ~ (pi/2)(T* - 1),   omega_m ~ (pi^3/12)(T* - 1)^3,
+    d omega_m / d T* ~ (pi^3/4)(T* - 1)^2,   W ~ (pi^4/3) eps^3 = (pi^4/24)(A - 2)^3.
+
+The extra torsional compliance of the slipping interface, d phi / d T = (4 / (pi mu
+a^3)) d omega / d T*, equals that of an added shaft length 2 a d omega / d T*.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+from scipy import special
+
+from .. import validation
+from ..backends import Series
+from ..criteria import GROSS_SLIP_TORQUE
+from ..quadrature import gauss_legendre_panels
+from ..special.zeros import bessel_j2_zeros
+from .memory import InterfaceState, monotonic
+
+__all__ = [
+    "slip_increments",
+    "cumulative_slip",
+    "frictional_work",
+    "dissipation_per_cycle",
+    "threshold_asymptotics",
+]
+
+
+# --------------------------------------------------------------------------- slip records
+def slip_increments(states: Sequence[InterfaceState], r, *, start: InterfaceState | None = None) -> np.ndarray:
+    """Slip change (f p0 a / mu) over each step: array (len(states), *r.shape).
+
+    The first step is measured from ``start`` (default: the virgin interface).
+    """
+    r = np.asarray(r, dtype=float)
+    previous = np.zeros(r.shape) if start is None else start.slip(r)
+    out = []
+    for s in states:
+        current = s.slip(r)
+        out.append(current - previous)
+        previous = current
+    return np.array(out)
+
+
+def cumulative_slip(states: Sequence[InterfaceState], r, *, start: InterfaceState | None = None) -> np.ndarray:
+    """Total slip distance sum_k |s_k(r) - s_{k-1}(r)| (f p0 a / mu) along the history.
+
+    Exact when every step is one monotonic branch segment: the slip at each r is then
+    monotonic during the step (its rate has the sign of the traction, +-1).
+    """
+    return np.sum(np.abs(slip_increments(states, r, start=start)), axis=0)
+
+
+def _radial_rule(n_terms: int | None):
+    """Composite Gauss-Legendre rule on [0, 1] with panels of 20 / lam_N (32 nodes each).
+
+    The truncated series are entire functions of r whose products oscillate at most like
+    exp(2 i lam_N r), so this rule integrates them to rounding error.
+    """
+    return gauss_legendre_panels(0.0, 1.0, 20.0 / bessel_j2_zeros(n_terms)[-1])
+
+
+def _interface_fields(states, nodes):
+    """Traction and slip of every state at ``nodes``, each distinct monotonic solution evaluated once.
+
+    Partial-slip solutions are summed with one shared matrix J1(lam_n r_i) (the same
+    sums as ``Solution.traction`` / ``Solution.slip`` on z = 0, eqs. 25-26, without
+    their per-call Bessel evaluations); other regimes use the ``Solution`` methods.
+    """
+    bessel = None
+    memo: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+    out = []
+    for state in states:
+        q = np.zeros(nodes.shape)
+        s = np.zeros(nodes.shape)
+        for w, sol in state.components:
+            if id(sol) not in memo:
+                if sol.regime == "partial-slip" and isinstance(sol.backend, Series):
+                    series = sol.backend.solution
+                    if bessel is None or bessel.shape[1] != series.eigenvalues.size:
+                        bessel = special.j1(np.outer(nodes, series.eigenvalues))
+                    rigid = sol.backend.rigid_rotation
+                    memo[id(sol)] = (
+                        sol.sign * (series.torque * nodes - bessel @ (series.amplitudes * series.eigenvalues)),
+                        2.0 * sol.sign * (rigid * nodes + bessel @ series.amplitudes),
+                    )
+                else:
+                    memo[id(sol)] = (sol.traction(nodes), sol.slip(nodes))
+            q = q + w * memo[id(sol)][0]
+            s = s + w * memo[id(sol)][1]
+        out.append((q, s))
+    return out
+
+
+def frictional_work(states: Sequence[InterfaceState]) -> float:
+    """2 pi sum_k int_0^1 (q_k + q_{k+1})/2 (s_{k+1} - s_k) r dr ((f p0)^2 a^3 / mu).
+
+    The frictional work along the sampled path ``states`` (trapezoidal rule in time,
+    composite Gauss-Legendre in r), from the tractions and slips of the states alone
+    (omega is used only through the slip).  For a closed loop it equals ``loop_work``
+    up to the r-quadrature error whatever the sampling: with the traction (ii) and
+    displacement (i) of ``solvers.weak_form`` the work of q on the eigenfunction part of the
+    slip is the change of the elastic energy sum_n lam_n h_n c_n^2 / 2, which the
+    trapezoidal rule telescopes exactly, and the work on the rigid part is pi T* d omega
+    (int_0^1 r^2 J1(lam_n r) dr = 0).  The independent check of both is
+    ``dissipation_per_cycle`` (friction law + memory rules).
+    """
+    if len(states) < 2:
+        return 0.0
+    nodes, weights = _radial_rule(states[0].n_terms)
+    fields = _interface_fields(states, nodes)
+    total = 0.0
+    for (q0, s0), (q1, s1) in zip(fields[:-1], fields[1:], strict=True):
+        total += float(np.sum(0.5 * (q0 + q1) * (s1 - s0) * nodes * weights))
+    return 2.0 * math.pi * total
+
+
+def dissipation_per_cycle(torque_range, *, method=None, n_terms=None) -> float:
+    """W(A) = 8 pi int_0^1 s_m(r; A/2) r dr ((f p0)^2 a^3 / mu), zero for A <= 2.
+
+    The energy dissipated per closed loop of range A (any mean torque): on each half
+    cycle the traction is the friction limit on the slip annulus and the slip increment
+    there is 2 s_m(r; A/2) (memory rule 2).
+
+    Raises
+    ------
+    ValueError
+        If A is not finite or outside [0, 8/3].
+    """
+    value = validation.real_number("torque_range", torque_range, 0.0, 2 * GROSS_SLIP_TORQUE)
+    mono = monotonic(value / 2.0, method=method, n_terms=n_terms)
+    if mono.regime == "stick":
+        return 0.0
+    # the series' slip oscillates on the scale 1 / lam_N; the fast slip is smooth
+    series = isinstance(mono.backend, Series)
+    width = 20.0 / mono.backend.solution.eigenvalues[-1] if series else 0.05
+    nodes, weights = gauss_legendre_panels(mono.stick_radius, 1.0, width, ())
+    return float(8.0 * math.pi * np.sum(mono.slip(nodes) * nodes * weights))
+
+
+def threshold_asymptotics(eps):
+    """Leading terms just above slip onset / the cyclic-slip threshold (module docstring).
+
+    Parameters
+    ----------
+    eps : array_like
+        T* - 1 for the monotonic curve, or A/2 - 1 for a loop of range A.
+
+    Returns
+    -------
+    dict of ndarray: ``slip_annulus`` (1 - b), ``rigid_rotation`` (omega_m),
+    ``compliance`` (d omega_m / d T*), ``dissipation`` (W per cycle).
+    """
+    eps = np.asarray(eps, dtype=float)
+    return {
+        "slip_annulus": 0.5 * math.pi * eps,
+        "rigid_rotation": math.pi**3 / 12.0 * eps**3,
+        "compliance": math.pi**3 / 4.0 * eps**2,
+        "dissipation": math.pi**4 / 3.0 * eps**3,
+    }

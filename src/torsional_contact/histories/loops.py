@@ -1,0 +1,206 @@
+r"""Sampled branches and closed hysteresis loops of the memory rules (``memory``).
+
+Units: T* = 2T/(f F a); omega in f p0 / mu; energies in (f p0)^2 a^3 / mu.  The
+torque-twist loop of a range A closes after the first cycle (Masing); ``loop_work``
+gives pi times its area, which ``energy`` checks against the frictional work.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .. import validation
+from ..criteria import GROSS_SLIP_TORQUE
+from ..diagnostics import ResolutionWarning
+from ..solution import solve
+from ..solvers.weak_form import resolution_limit
+from .memory import (
+    CYCLIC_SLIP_RANGE,
+    InterfaceState,
+    _closure,
+    _compose,
+    _limit,
+    _pop,
+    _sign,
+    _start,
+    advance,
+    history,
+    monotonic,
+)
+
+__all__ = ["sample_path", "Loop", "hysteresis_loop", "loop_work", "tangent_compliance", "relaxation_profiles"]
+
+
+# --------------------------------------------------------------------------- dense paths
+def _stick_radius_grid(b_start: float, b_end: float, n_points: int, n_terms: int) -> np.ndarray:
+    """Interior stick radii from b_start (exclusive) down to b_end (exclusive), resolved ones only."""
+    _, b_max = resolution_limit(n_terms)
+    upper = min(b_start, b_max)
+    if upper <= b_end:
+        return np.empty(0)
+    return np.linspace(upper, b_end, n_points + 1)[:-1][1 if upper == b_start else 0 :]
+
+
+def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[InterfaceState, ...]:
+    """States along the monotonic path from ``state`` to ``torque`` (start excluded, end included).
+
+    Stick stretches are represented by their end points (there omega and slip are
+    constant and the traction is linear in T*); slipping stretches by ``n_points``
+    states equally spaced in the stick radius (solved directly for b, no inversion)
+    between the resolved limit 1 - 10/lam_N and the end.  Closed loops met on the way
+    are erased exactly as in ``advance``.
+    """
+    t = validation.torque("torque", torque)
+    if t == state.torque:
+        return ()
+    d = _sign(t - state.torque)
+    stack = _start(state, d)
+    current = state.torque
+    out: list[InterfaceState] = []
+    while True:
+        limit = _limit(stack) if stack else None
+        closes = limit is not None and d * (t - limit) >= 0
+        end = limit if closes else t
+        origin, factor = (stack[-1].torque, 2.0) if stack else (0.0, 1.0)
+        tau_a, tau_b = abs(current - origin) / factor, abs(end - origin) / factor
+        mono_a = monotonic(min(tau_a, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
+        mono_b = monotonic(min(tau_b, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
+        if tau_a < 1.0 < tau_b:  # stick stretch ends at the slip onset
+            onset = monotonic(1.0, method=state.method, n_terms=state.n_terms)
+            out.append(_compose(stack, d, onset, origin + d * factor, state.method, state.n_terms))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ResolutionWarning)  # only resolved radii are requested
+            for b in _stick_radius_grid(mono_a.stick_radius, mono_b.stick_radius, n_points, state.n_terms):
+                mono = solve(stick_radius=float(b), method=state.method, n_terms=state.n_terms)
+                out.append(_compose(stack, d, mono, origin + d * factor * mono.torque, state.method, state.n_terms))
+        if closes:
+            out.append(_closure(stack, d, end, state.method, state.n_terms))
+            if end == t:
+                return tuple(out)
+            _pop(stack)
+            current = end
+            continue
+        out.append(_compose(stack, d, mono_b, t, state.method, state.n_terms))
+        return tuple(out)
+
+
+# --------------------------------------------------------------------------- hysteresis
+@dataclass(frozen=True)
+class Loop:
+    """One closed steady torque-twist loop, starting and ending at ``t_max``.
+
+    Attributes
+    ----------
+    torque, rigid_rotation : ndarray
+        T* and omega (f p0 / mu) along the loop (first and last points equal).
+    states : tuple of InterfaceState
+        The states behind the points.
+    """
+
+    t_min: float
+    t_max: float
+    torque: np.ndarray
+    rigid_rotation: np.ndarray
+    states: tuple[InterfaceState, ...] = field(repr=False)
+
+
+def hysteresis_loop(t_min, t_max, *, n_points: int = 40, method=None, n_terms=None) -> Loop:
+    """Steady loop T_max -> T_min -> T_max after the history 0 -> T_max -> T_min -> T_max.
+
+    By Masing closure the loop is reached in the first cycle.  ``n_points`` states per
+    slipping stretch (see ``sample_path``).
+    """
+    t_min = validation.torque("t_min", t_min)
+    t_max = validation.torque("t_max", t_max)
+    if not t_min < t_max:
+        raise ValueError(f"t_min must be below t_max, got t_min={t_min!r}, t_max={t_max!r}")
+    start = history([t_max, t_min, t_max], method=method, n_terms=n_terms)[-1]
+    down = sample_path(start, t_min, n_points)
+    up = sample_path(down[-1], t_max, n_points)
+    states = (start, *down, *up)
+    return Loop(
+        t_min,
+        t_max,
+        np.array([s.torque for s in states]),
+        np.array([s.rigid_rotation for s in states]),
+        states,
+    )
+
+
+def loop_work(torque, rigid_rotation) -> float:
+    """W = pi oint T* d omega by the trapezoidal rule along the path ((f p0)^2 a^3 / mu).
+
+    For a closed path this is the enclosed area in the (omega, T*) plane times pi (see
+    the module docstring for the factor).
+    """
+    torque = np.asarray(torque, dtype=float)
+    omega = np.asarray(rigid_rotation, dtype=float)
+    return float(math.pi * np.sum(0.5 * (torque[1:] + torque[:-1]) * np.diff(omega)))
+
+
+def tangent_compliance(state: InterfaceState, *, step: float = 1e-4) -> float:
+    """d omega / d T* (f p0 / mu per unit T*) along the current branch at ``state``.
+
+    On a branch omega = omega_k + 2 d omega_m(tau), T* = T_k + 2 d tau, so the slope is
+    omega_m'(tau) on every branch and on the virgin curve (zero while the branch
+    sticks): central differences in the stick radius, omega_m'(b) / T*'(b).  At a
+    loop-closure point (see ``InterfaceState.front``) it is the slope of the outer
+    branch that continues beyond it.
+    """
+    mono = state.components[-1][1]
+    b = mono.stick_radius
+    if b >= 1.0:
+        return 0.0
+    if b <= 0.0:
+        return math.inf
+    h = min(step, b / 2, (1 - b) / 2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResolutionWarning)
+        lo = solve(stick_radius=b - h, method=state.method, n_terms=state.n_terms)
+        hi = solve(stick_radius=b + h, method=state.method, n_terms=state.n_terms)
+    return float((hi.rigid_rotation - lo.rigid_rotation) / (hi.torque - lo.torque))
+
+
+# --------------------------------------------------------------------------- Fig. 5
+def relaxation_profiles(
+    t_max: float = 1.23,
+    stages: Sequence[float] = (1.23, 0.9, 0.5, 0.0, -0.5, -0.77, -0.9),
+    radii=None,
+    *,
+    method=None,
+    n_terms=None,
+) -> dict:
+    """Fig. 5 in data: load to ``t_max``, relax through ``stages``; traction profiles.
+
+    Returns
+    -------
+    dict with ``radii``, ``torque`` (stages), ``traction`` (rows per stage),
+    ``stick_radius`` and ``regime`` per stage, ``residual_traction`` (at T* = 0),
+    ``loading_stick_radius`` b(t_max), ``reverse_slip_onset`` = t_max - 2 (memory rule
+    2) and ``min_traction_at_onset``, the least traction at that torque (-1 exactly
+    when reverse slip is incipient, at r = 1).
+    """
+    radii = np.linspace(0.0, 1.0, 201) if radii is None else np.asarray(radii, dtype=float)
+    loaded = history([t_max], method=method, n_terms=n_terms)[-1]
+    states = history(list(stages), method=method, n_terms=n_terms, start=loaded)
+    onset = t_max - CYCLIC_SLIP_RANGE
+    at_onset = advance(loaded, onset)
+    return {
+        "t_max": t_max,
+        "loading_stick_radius": loaded.stick_radius,
+        "radii": radii,
+        "torque": np.array([s.torque for s in states]),
+        "stick_radius": np.array([s.stick_radius for s in states]),
+        "regime": [s.regime for s in states],
+        "traction": np.array([s.traction(radii) for s in states]),
+        "residual_traction": loaded.residual_traction(radii),
+        "reverse_slip_onset": onset,
+        "min_traction_at_onset": float(np.min(at_onset.traction(radii))),
+    }
+
+

@@ -1,0 +1,395 @@
+r"""Arbitrary torque histories: memory, shakedown, hysteresis and dissipation.
+
+Units (docs/conventions.md): r in a; torque T* = 2T/(f F a) (eq. 32); tractions in f p0;
+displacements and slip in f p0 a / mu; omega (rigid rotation of the upper cylinder
+beyond uniform twist) in f p0 / mu; energies in (f p0)^2 a^3 / mu
+(= (f F)^2 / (pi^2 mu a)).
+
+Memory rules (Cattaneo-Mindlin, Masing)
+---------------------------------------
+Write mono(tau) for the monotonic solution of ``solve`` at torque 0 <= tau <= 4/3
+(friction limit 1, eqs. 7-8): traction q_m(r; tau), displacement u_m, rigid rotation
+omega_m(tau), stick radius b(tau) (b = 1 for tau <= 1).
+
+1. *The contact pressure never changes.*  The torsion problem is uncoupled (section 4):
+   u_theta does not alter sigma_zz = -p0 (eq. 1), so the friction limit is f p0 at every
+   point and for every torque.  The problem for (u_theta, traction) is then linear
+   and positively homogeneous in the pair (torque, friction limit): the solution with
+   torque k tau and friction limit k is k mono(tau).
+
+2. *Reversal.*  Load monotonically to T_k > 1 (state S_k = mono(T_k): stick disc r <
+   b_k, traction 1 on b_k < r <= 1) and reverse.  Try
+
+       S(T) = S_k - 2 mono((T_k - T)/2),                                          (M)
+
+   i.e. the increment is the monotonic solution for torque decrement T_k - T and
+   friction limit 2.  Write tau = (T_k - T)/2 and c = b(tau).
+   * On r < c the increment has zero displacement: those points do not slip, the
+     traction is q_k - 2 q_m.
+   * On c < r <= 1 the increment carries traction -2, so q = q_k - 2.  This is the
+     reversed friction limit -1 *only where q_k = 1*, i.e. if the reverse-slip annulus
+     lies inside the previous slip annulus: c >= b_k.  Because b(.) decreases and
+     tau <= T_k while T >= -T_k, c = b(tau) >= b(T_k) = b_k: the reverse-slip annulus
+     always stays outside the previous stick disc, so (M) satisfies the boundary
+     conditions exactly (not approximately) and, by uniqueness of the mixed problem,
+     is *the* solution.  The slip increment -2 s_m(r; tau) is <= 0 where the traction
+     is -1 (slip opposes the friction force), and |q| <= 1 on r < c because q_m grows
+     with tau at every r: 2 q_m(tau) <= q_m(tau) + q_m(T_k) <= 1 + q_k (checked
+     numerically in the tests).
+   * In stick (2 tau <= 2, i.e. a torque range |T - T_k| <= 2) the increment is the
+     elastic field -(T_k - T) r: no point slips.  The first reverse slip appears at
+     r = a when the range reaches 2: after loading to 1.23 (b = 0.6, Fig. 5) reverse
+     slip starts at T* = 1.23 - 2 = -0.77, as the paper states.  The traction when the
+     torque returns to zero, q_k(r) - T_k r, is the residual traction of Fig. 5.
+3. *Shakedown (Melan, section 4).*  A torque oscillating over a range A = T_max -
+   T_min <= 2 after the first loading to T_max never slips again (by 2.: every
+   reversal after the first one has range <= 2), so the interface shakes down to full
+   stick after the first loading.  A > 2 gives reverse slip over c = b(A/2) < r <= 1 on
+   every half cycle: cyclic slip, closed hysteresis loops, dissipation.
+4. *Nested reversals, the stack (Masing closure).*  Keep the stack of remembered
+   turning points T_1, T_2, ..., T_k (ranges |T_{j+1} - T_j| strictly decreasing; T_1
+   lies on the virgin ("skeleton") curve S = sign(T) mono(|T|)).  The current branch
+   is S(T) = S(T_k) + d 2 mono(|T - T_k|/2), d = sign(T - T_k), valid while the
+   branch has not passed T_{k-1}: the argument of 2. applies with S_k replaced by the
+   branch state from T_{k-1}, whose slip annulus is where its traction equals -d.  At
+   T = T_{k-1} the branch returns *exactly* to S(T_{k-1}) (two opposite, equal
+   increments), so the inner loop T_{k-1} -> T_k -> T_{k-1} is closed and erased: T_k
+   and T_{k-1} are popped, and the continuation is the branch that led to T_{k-1}.
+   For k = 1 the limit is -T_1: there the branch meets the mirrored skeleton,
+   S(-T_1) = mono(T_1) - 2 mono(T_1) = -mono(T_1), T_1 is popped and the state
+   continues on the skeleton.  The rules are the rainflow stack rules.
+
+Each state is thus a short linear combination of monotonic solutions (one per stack
+level); traction, slip, stresses and omega are the same combinations.  The stick
+radius of a state is b of its current branch (1 when the current branch has not
+slipped); the slip fronts remembered are the stick radii at which the remembered
+branches ended.  A loop is erased when its branch *reaches* the earlier turning point
+(equality included, so repeated cycles between the same torques keep a bounded
+stack); the state there is the earlier state itself, with the stick radius of the
+closing branch (1 for a range <= 2: no slip during that half cycle).
+
+Independent check: ``verification.incremental`` solves the incremental mixed problem (no slip on
+0 <= r < c relative to the remembered displacement, traction -+1 on c < r <= 1)
+directly in the weak form; tests/test_history.py compares it with (M) and its
+nested versions.
+
+Energies, loops and dissipation: ``energy`` and ``loops``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .. import validation
+from ..criteria import GROSS_SLIP_TORQUE
+from ..solution import DEFAULT_N_TERMS, Solution, solve
+
+__all__ = [
+    "DEFAULT_METHOD",
+    "CYCLIC_SLIP_RANGE",
+    "TurningPoint",
+    "InterfaceState",
+    "initial_state",
+    "monotonic",
+    "advance",
+    "history",
+    "turning_points",
+]
+
+#: Default formulation of the histories: the complete weak form at the paper's N.  Its
+#: truncated series makes the loop-area / frictional-work identity exact and is what the
+#: direct incremental solve (``verification.incremental``) checks; ``method="fast"`` is accepted
+#: everywhere and gives the more accurate monotonic solutions of ``solvers.abel_fredholm``.
+DEFAULT_METHOD = "complete"
+
+#: Torque range above which a reversal slips again (twice the slip-onset torque).
+CYCLIC_SLIP_RANGE = 2.0
+_ONSET_ULPS = 8
+
+
+# --------------------------------------------------------------------------- monotonic
+@functools.lru_cache(maxsize=4096)
+def _monotonic_cached(tau: float, method: str, n_terms: int) -> Solution:
+    return solve(torque=tau, method=method, n_terms=n_terms)
+
+
+def monotonic(tau: float, *, method=None, n_terms=None) -> Solution:
+    """mono(tau): the monotonic solution at torque tau in [0, 4/3], friction limit 1 (cached).
+
+    A tau within a few ulps of the slip onset 1 (e.g. (1.23 - (1.23 - 2)) / 2) is taken
+    as 1: rounding must not open an unresolvable slip annulus.
+    """
+    tau = validation.torque("tau", tau)
+    if tau < 0:
+        raise ValueError(f"tau must lie in [0, 4/3], got {tau!r}")
+    if abs(tau - 1.0) <= _ONSET_ULPS * np.finfo(float).eps:
+        tau = 1.0
+    method = DEFAULT_METHOD if method is None else method
+    n_terms = DEFAULT_N_TERMS if n_terms is None else n_terms
+    return _monotonic_cached(tau, method, n_terms)
+
+
+# --------------------------------------------------------------------------- states
+@dataclass(frozen=True)
+class TurningPoint:
+    """A remembered reversal: its torque, the slip front of the branch that ended there, its state."""
+
+    torque: float
+    slip_front: float
+    state: InterfaceState = field(repr=False, compare=False)
+
+
+@dataclass(frozen=True)
+class InterfaceState:
+    """Interface state after a torque history (see the module docstring).
+
+    Attributes
+    ----------
+    torque : float
+        Current T*.
+    stick_radius : float
+        Radius (units a) inside which no slip has occurred during the current loading
+        branch: b(|T - T_k|/2) after a reversal at T_k, b(|T|) on the virgin curve.
+    direction : int
+        +1 (torque increasing), -1 (decreasing), 0 (virgin state, no step yet).
+    memory : tuple of TurningPoint
+        The stack of remembered turning points, oldest first.
+    components : tuple of (float, Solution)
+        The state as sum_j w_j mono(tau_j) (weights +-1 on the virgin curve, +-2 on
+        branches).
+    front : float
+        Slip front of the (Masing) branch the state lies on; remembered as the slip
+        front of this state if the torque reverses here.  Equal to ``stick_radius``
+        except where a branch has just closed a loop exactly at an earlier turning
+        point: the state is then that earlier state (with its front) while the stick
+        radius is that of the closing branch (1 if its range was <= 2).
+    """
+
+    torque: float
+    stick_radius: float
+    direction: int
+    memory: tuple[TurningPoint, ...]
+    components: tuple[tuple[float, Solution], ...] = field(repr=False)
+    method: str = DEFAULT_METHOD
+    n_terms: int = DEFAULT_N_TERMS
+    front: float = 1.0
+
+    @property
+    def regime(self) -> str:
+        """Of the current branch: "stick" (no slip since the last reversal), "partial-slip", "gross-slip"."""
+        if self.stick_radius >= 1.0:
+            return "stick"
+        return "gross-slip" if self.stick_radius <= 0.0 else "partial-slip"
+
+    @property
+    def slip_fronts(self) -> tuple[float, ...]:
+        """Radii of the slip fronts remembered from earlier branches (< 1 only), stack order."""
+        return tuple(tp.slip_front for tp in self.memory if tp.slip_front < 1.0)
+
+    @property
+    def turning_torques(self) -> tuple[float, ...]:
+        return tuple(tp.torque for tp in self.memory)
+
+    @property
+    def rigid_rotation(self) -> float:
+        """omega (f p0 / mu): the same combination of the monotonic omegas; +-inf after spinning."""
+        return float(sum(w * s.rigid_rotation for w, s in self.components))
+
+    def traction(self, r):
+        """sigma_zt(r, 0) / (f p0)."""
+        return sum(w * s.traction(r) for w, s in self.components)
+
+    def slip(self, r):
+        """Net slip s(r) = 2 u_theta(r, 0+) (f p0 a / mu) accumulated over the whole history."""
+        return sum(w * s.slip(r) for w, s in self.components)
+
+    def residual_traction(self, r):
+        """Traction (f p0) left when the torque is taken back to zero from this state.
+
+        Going to zero is a torque change of |T| <= 4/3 < 2, either a reversal or the
+        continuation of a branch whose total range stays below 2; in both cases no
+        point slips (memory rule 2) and the traction changes by -T r.
+        """
+        r = np.asarray(r, dtype=float)
+        return self.traction(r) - self.torque * r
+
+    def stress(self, r, z):
+        """(sigma_zt, sigma_rt) / (f p0) at (r, z), z >= 0, by superposition (eqs. 2, 3, 23, 24)."""
+        parts = [s.stress(r, z) for _, s in self.components]
+        return (
+            sum(w * p[0] for (w, _), p in zip(self.components, parts, strict=True)),
+            sum(w * p[1] for (w, _), p in zip(self.components, parts, strict=True)),
+        )
+
+    def displacement(self, r, z):
+        """u_theta(r, z) of the upper cylinder (f p0 a / mu), eqs. (4), (22), by superposition."""
+        return sum(w * s.displacement(r, z) for w, s in self.components)
+
+    def as_dict(self) -> dict:
+        """JSON-ready summary (non-finite rotation -> None)."""
+        omega = self.rigid_rotation
+        return {
+            "torque": self.torque,
+            "stick_radius": self.stick_radius,
+            "slip_fronts": list(self.slip_fronts),
+            "turning_points": list(self.turning_torques),
+            "rigid_rotation": omega if math.isfinite(omega) else None,
+            "regime": self.regime,
+            "direction": self.direction,
+            "method": self.method,
+            "n_terms": self.n_terms,
+        }
+
+
+def initial_state(*, method=None, n_terms=None) -> InterfaceState:
+    """The virgin interface: T* = 0, no slip, nothing remembered."""
+    method = DEFAULT_METHOD if method is None else method
+    n_terms = DEFAULT_N_TERMS if n_terms is None else n_terms
+    zero = monotonic(0.0, method=method, n_terms=n_terms)
+    return InterfaceState(0.0, 1.0, 0, (), ((1.0, zero),), method, n_terms, 1.0)
+
+
+def _sign(x: float) -> int:
+    return 1 if x > 0 else -1
+
+
+def _limit(stack: Sequence[TurningPoint]) -> float:
+    """Torque at which the current branch closes its loop (rule 4)."""
+    return stack[-2].torque if len(stack) >= 2 else -stack[-1].torque
+
+
+def _pop(stack: list[TurningPoint]) -> None:
+    if len(stack) >= 2:
+        del stack[-2:]
+    else:
+        stack.pop()
+
+
+def _start(state: InterfaceState, direction: int) -> list[TurningPoint]:
+    """The stack for a step in ``direction`` from ``state`` (pushes the state on a reversal)."""
+    stack = list(state.memory)
+    if state.direction != 0 and direction != state.direction:
+        stack.append(TurningPoint(state.torque, state.front, state))
+    return stack
+
+
+def _compose(stack, direction, mono: Solution, torque: float, method, n_terms) -> InterfaceState:
+    """State on the branch from the top of ``stack`` (or the virgin curve) with increment ``mono``."""
+    if stack:
+        origin = stack[-1].state
+        components = origin.components + ((2.0 * direction, mono),)
+    else:
+        components = ((float(direction), mono),)
+    return InterfaceState(
+        torque, mono.stick_radius, direction, tuple(stack), components, method, n_terms, mono.stick_radius
+    )
+
+
+def _closure(stack, direction, torque, method, n_terms) -> InterfaceState:
+    """State where the branch from the top of ``stack`` reaches its limit exactly (rule 4).
+
+    It is the earlier state at that torque (the inner loop cancels exactly: the same
+    monotonic solutions with opposite weights), or the mirrored virgin state for a
+    single remembered point; the stick radius is that of the closing branch.
+    """
+    closing = monotonic(abs(torque - stack[-1].torque) / 2.0, method=method, n_terms=n_terms)
+    if len(stack) >= 2:
+        earlier = stack[-2].state
+    else:
+        virgin = monotonic(abs(torque), method=method, n_terms=n_terms)
+        earlier = _compose([], direction, virgin, torque, method, n_terms)
+    return dataclasses.replace(earlier, torque=torque, stick_radius=closing.stick_radius, direction=direction)
+
+
+def advance(state: InterfaceState, torque) -> InterfaceState:
+    """The state after a monotonic torque change from ``state.torque`` to ``torque``.
+
+    Parameters
+    ----------
+    state : InterfaceState
+    torque : float
+        Target T* in [-4/3, 4/3].
+
+    Returns
+    -------
+    InterfaceState
+        By the memory rules of the module docstring (loops closed on the way are erased).
+
+    Raises
+    ------
+    ValueError
+        If ``torque`` is not finite or |torque| > 4/3 (the cylinders spin).
+    """
+    t = validation.torque("torque", torque)
+    if t == state.torque:
+        return state
+    d = _sign(t - state.torque)
+    stack = _start(state, d)
+    while stack and d * (t - _limit(stack)) > 0:
+        _pop(stack)
+    if stack and t == _limit(stack):
+        return _closure(stack, d, t, state.method, state.n_terms)
+    tau = abs(t - stack[-1].torque) / 2.0 if stack else abs(t)
+    mono = monotonic(min(tau, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
+    return _compose(stack, d, mono, t, state.method, state.n_terms)
+
+
+def history(torques, *, method=None, n_terms=None, start: InterfaceState | None = None) -> tuple[InterfaceState, ...]:
+    """States after each step of a torque history, starting from the virgin interface.
+
+    Parameters
+    ----------
+    torques : sequence of float
+        T* after each step (turning points, or any points: consecutive points in the
+        same direction are simply one branch sampled more finely).  Each in [-4/3, 4/3].
+    method, n_terms :
+        Passed to ``solve`` for the monotonic solutions.
+    start : InterfaceState, optional
+        Continue from this state instead of the virgin interface.
+
+    Returns
+    -------
+    tuple of InterfaceState, one per entry of ``torques``.
+
+    Raises
+    ------
+    ValueError
+        Naming ``torques[i]`` for a non-finite entry or |T*| > 4/3; for an empty history.
+    """
+    values = validation.torque_sequence("torques", torques)
+    state = initial_state(method=method, n_terms=n_terms) if start is None else start
+    out = []
+    for t in values:
+        state = advance(state, t)
+        out.append(state)
+    return tuple(out)
+
+
+def turning_points(signal) -> np.ndarray:
+    """Reduce a sampled torque signal to its turning points (first and last samples kept).
+
+    Repeated samples are merged and samples where the signal keeps its direction are
+    dropped; by the memory rules the states at the turning points, and the state at the
+    end, do not depend on the dropped samples.
+
+    Raises
+    ------
+    ValueError
+        For an empty signal, non-finite samples or |T*| > 4/3 (naming ``signal[i]``).
+    """
+    values = np.array(validation.torque_sequence("signal", signal))
+    keep = np.concatenate([[True], np.diff(values) != 0])
+    values = values[keep]
+    if values.size <= 2:
+        return values
+    step = np.sign(np.diff(values))
+    reversal = step[1:] != step[:-1]
+    return np.concatenate([[values[0]], values[1:-1][reversal], [values[-1]]])
+
+

@@ -1,0 +1,54 @@
+"""Gauss-Legendre rules shared by the solvers, the histories and the checks (double precision).
+
+Lengths in the cylinder radius a.  The arbitrary-precision rules of the verification
+wing are in ``verification/quadrature.py``.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Sequence
+
+import numpy as np
+from numpy.polynomial import legendre
+
+__all__ = ["gauss_legendre", "gauss_legendre_panels", "PANEL_NODES"]
+
+#: Nodes per panel of ``gauss_legendre_panels``.
+PANEL_NODES = 32
+
+
+@functools.lru_cache(maxsize=64)
+def gauss_legendre(n: int):
+    """Read-only Gauss-Legendre nodes and weights on [-1, 1] (cached per ``n``)."""
+    x, w = legendre.leggauss(int(n))
+    x.flags.writeable = False
+    w.flags.writeable = False
+    return x, w
+
+
+def gauss_legendre_panels(lower: float, upper: float, max_width: float, breakpoints: Sequence[float] = ()):
+    """Nodes and weights of a composite Gauss-Legendre rule on [lower, upper].
+
+    The interval is first split at the ``breakpoints`` inside it, then every piece
+    into equal panels no wider than ``max_width``, each with ``PANEL_NODES`` nodes.
+
+    Returns
+    -------
+    (nodes, weights) : tuple of ndarray
+        Empty arrays when upper <= lower.
+    """
+    if upper <= lower:
+        return np.empty(0), np.empty(0)
+    cuts = sorted({lower, upper, *(float(x) for x in breakpoints if lower < x < upper)})
+    x_ref, w_ref = gauss_legendre(PANEL_NODES)
+    nodes, weights = [], []
+    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
+        n_panels = max(1, math.ceil((b - a) / max_width))
+        edges = np.linspace(a, b, n_panels + 1)
+        half = 0.5 * np.diff(edges)
+        mid = 0.5 * (edges[:-1] + edges[1:])
+        nodes.append((mid[:, None] + half[:, None] * x_ref[None, :]).ravel())
+        weights.append((half[:, None] * w_ref[None, :]).ravel())
+    return np.concatenate(nodes), np.concatenate(weights)

@@ -1,0 +1,49 @@
+"""Verdict rules of the errata checks and the record each check returns (thresholds in ``settings``)."""
+
+from __future__ import annotations
+
+from .settings import TOL_FORMULA, VERDICTS
+
+__all__ = ["verdict_formula", "verdict_quoted", "entry", "relative_difference"]
+
+
+
+
+def verdict_formula(discrepancy: float, tol: float = TOL_FORMULA, corrected_discrepancy: float | None = None) -> str:
+    """``correct`` if discrepancy <= tol, ``typo`` if only a listed correction passes, else ``incorrect``."""
+    if discrepancy <= tol:
+        return "correct"
+    if corrected_discrepancy is not None and corrected_discrepancy <= tol:
+        return "typo"
+    return "incorrect"
+
+
+def verdict_quoted(computed: float, quoted: float, decimals: int) -> tuple[str, float]:
+    """Quoted number with ``decimals`` printed decimals vs the computed value.
+
+    Returns (verdict, relative discrepancy).  ``correct`` if |computed - quoted| is at
+    most half a unit of the last printed decimal (plus 1e-12 for rounding of the test).
+    """
+    half_unit = 0.5 * 10.0 ** (-decimals)
+    diff = abs(computed - quoted)
+    return ("correct" if diff <= half_unit * (1 + 1e-12) else "incorrect"), diff / abs(computed)
+
+
+def entry(equation, check, discrepancy, verdict, note, **details):
+    if verdict not in VERDICTS:
+        raise ValueError(f"verdict must be one of {VERDICTS}, got {verdict!r}")
+    return {
+        "equation": equation,
+        "check": check,
+        "max_rel_discrepancy": None if discrepancy is None else float(discrepancy),
+        "verdict": verdict,
+        "note": note,
+        "details": details,
+    }
+
+
+
+
+def relative_difference(a, b) -> float:
+    """|a - b| / |b| as a float (mpf or float arguments)."""
+    return float(abs(a - b) / abs(b))

@@ -1,0 +1,88 @@
+"""Which library files a workflow script depends on: the transitive closure of its imports.
+
+Used by workflow/rules/common.smk (each rule's ``lib`` input) and by the tests.  Reads the
+sources with ``ast`` only; imports nothing from the package.
+"""
+
+import ast
+from pathlib import Path
+
+SRC = Path("src")
+PACKAGE = "torsional_contact"
+
+
+def _module_file(dotted):
+    """The file of a dotted module name under src/ (module.py or package/__init__.py), or None."""
+    base = SRC.joinpath(*dotted.split("."))
+    for candidate in (base.with_suffix(".py"), base / "__init__.py"):
+        if candidate.exists():
+            return candidate
+    return None
+
+
+def _dotted(path):
+    """Dotted module name of a file under src/ (a package's __init__.py names the package)."""
+    parts = list(Path(path).relative_to(SRC).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _lazy_exports():
+    """name -> submodule of the package's lazy ``__init__`` (its _EXPORTS table)."""
+    tree = ast.parse((SRC / PACKAGE / "__init__.py").read_text())
+    for node in tree.body:
+        if isinstance(node, ast.AnnAssign | ast.Assign):
+            targets = [node.target] if isinstance(node, ast.AnnAssign) else node.targets
+            if any(getattr(t, "id", None) == "_EXPORTS" for t in targets):
+                return ast.literal_eval(node.value)
+    return {}
+
+
+def _imports(path):
+    """Dotted package modules one file imports (absolute or relative), with what they pull in."""
+    path = Path(path)
+    tree = ast.parse(path.read_text())
+    inside = SRC in path.parents
+    here = _dotted(path) if inside else ""
+    package = here if path.name == "__init__.py" else here.rpartition(".")[0]
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.update(a.name for a in node.names if a.name.split(".")[0] == PACKAGE)
+            continue
+        if not isinstance(node, ast.ImportFrom):
+            continue
+        if node.level:
+            if not inside:
+                continue
+            base = package.split(".")
+            base = base[: len(base) - (node.level - 1)]
+            dotted_module = ".".join(base + ([node.module] if node.module else []))
+        elif node.module and node.module.split(".")[0] == PACKAGE:
+            dotted_module = node.module
+        else:
+            continue
+        found.add(dotted_module)
+        exports = _lazy_exports() if dotted_module == PACKAGE else {}
+        for alias in node.names:
+            if _module_file(f"{dotted_module}.{alias.name}"):  # from package import submodule
+                found.add(f"{dotted_module}.{alias.name}")
+            elif alias.name in exports:  # a name the lazy __init__ imports on first use
+                found.add(f"{PACKAGE}.{exports[alias.name]}")
+    return found
+
+
+def library_files(script):
+    """Library files a workflow script depends on: the transitive closure of its imports.
+
+    Importing a.b.c runs the __init__ of a and a.b first, so those are included too.
+    """
+    todo, seen = list(_imports(script)), set()
+    while todo:
+        name = todo.pop()
+        if name in seen or _module_file(name) is None:
+            continue
+        seen.add(name)
+        parts = name.split(".")
+        todo.extend(".".join(parts[:k]) for k in range(1, len(parts)))
+        todo.extend(_imports(_module_file(name)) - seen)
+    return sorted(str(_module_file(name)) for name in seen)

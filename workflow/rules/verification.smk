@@ -1,0 +1,84 @@
+# The verification wing: arbitrary-precision references, precision cross-checks, the errata.
+
+WEAK_FORMS = ["published", "complete"]
+
+
+rule reference_weak_form:
+    input:
+        script="workflow/scripts/reference_weak_form.py",
+        lib=lib("workflow/scripts/reference_weak_form.py"),
+    output:
+        json=f"{OUT}/verification/reference_{{method}}.json",
+    params:
+        radii=config["reference"]["stick_radii"],
+        n=config["reference"]["n_terms"],
+        digits=config["reference"]["digits"],
+    log:
+        logfile("reference_{method}"),
+    wildcard_constraints:
+        method="published|complete",
+    resources:
+        runtime=10,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --method {wildcards.method} --stick-radii {params.radii} --n-terms {params.n}"
+        " --digits {params.digits} --json {output.json} > {log} 2>&1"
+
+
+rule precision_crosscheck:
+    input:
+        script="workflow/scripts/precision_crosscheck.py",
+        lib=lib("workflow/scripts/precision_crosscheck.py"),
+        references=expand(f"{OUT}/verification/reference_{{method}}.json", method=WEAK_FORMS),
+    output:
+        json=f"{OUT}/verification/crosscheck.json",
+    params:
+        converged=config["crosscheck"]["converged_n_terms"],
+        conditions=config["crosscheck"]["condition_n_terms"],
+    log:
+        logfile("precision_crosscheck"),
+    resources:
+        runtime=15,
+        mem_mb=4000,
+    shell:
+        "python {input.script} --references {input.references} --converged-n-terms {params.converged}"
+        " --condition-n-terms {params.conditions} --json {output.json} > {log} 2>&1"
+
+
+rule errata:
+    input:
+        script="workflow/scripts/errata_report.py",
+        lib=lib("workflow/scripts/errata_report.py"),
+    output:
+        json=f"{OUT}/errata/errata.json",
+        md=f"{OUT}/errata/errata.md",
+    log:
+        logfile("errata"),
+    resources:
+        runtime=15,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --json {output.json} --md {output.md} > {log} 2>&1"
+
+
+rule errata_tables:
+    input:
+        script="workflow/scripts/errata_tables.py",
+        lib=lib("workflow/scripts/errata_tables.py"),
+        errata=f"{OUT}/errata/errata.json",
+        crosscheck=f"{OUT}/verification/crosscheck.json",
+        reference=f"{OUT}/verification/reference_complete.json",
+    output:
+        tex=f"{OUT}/tables/errata_table.tex",
+        macros=f"{OUT}/macros/errata.tex",
+    log:
+        logfile("errata_tables"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --errata {input.errata} --crosscheck {input.crosscheck}"
+        " --reference {input.reference} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
+WILDCARDS["reference_weak_form"] = {"method": WEAK_FORMS}
