@@ -49,11 +49,15 @@ os.environ.setdefault("SOURCE_DATE_EPOCH", "0")
 os.environ["MPLBACKEND"] = "Agg"
 
 
+report: "workflow/report/workflow.rst"
+
+
 include: "workflow/rules/common.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/paper.smk"
+include: "workflow/rules/notebooks.smk"
 
 
 rule all:

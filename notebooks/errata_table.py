@@ -14,6 +14,9 @@
 # %% [markdown]
 # # The errata table
 #
+# Results read: `errata/errata.json`
+# (from the build's output folder, `RESULTS_DIR`).
+#
 # Every checked statement of the paper with its computed verdict (`correct`, `typo`,
 # `numerically-hazardous`, `incorrect`), how it was checked, and the largest discrepancy.
 # Reads `errata/errata.json` written by the workflow; set `RESULTS_DIR` for another folder.

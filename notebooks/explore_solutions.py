@@ -14,6 +14,9 @@
 # %% [markdown]
 # # Exploring T*(b), the interface fields and the unloading experiment
 #
+# Results read: `data/torque_curve.csv`, `data/torque_table.csv`, `data/history.json`
+# (from the build's output folder, `RESULTS_DIR`).
+#
 # This notebook reads the workflow's results (it recomputes nothing heavy). Build them with
 # `bash workflow/main.sh` (default configuration, `results/`) or set `RESULTS_DIR` to another
 # output folder, e.g. `results/ci` from the test configuration. Units: T* = 2T/(f F a),
@@ -31,7 +34,7 @@ import numpy as np
 RESULTS = Path(os.environ.get("RESULTS_DIR", "../results"))
 if not RESULTS.is_absolute() and not RESULTS.exists():
     RESULTS = Path.cwd().parent / RESULTS
-print("reading", RESULTS.resolve())
+print("reading", os.path.relpath(RESULTS))
 
 
 def read_csv(path):

@@ -14,6 +14,9 @@
 # %% [markdown]
 # # Double precision against arbitrary precision
 #
+# Results read: `verification/crosscheck.json`, `verification/reference_complete.json`
+# (from the build's output folder, `RESULTS_DIR`).
+#
 # Reads `verification/crosscheck.json` and `verification/reference_complete.json` written by the
 # workflow (`workflow/scripts/precision_crosscheck.py`, `reference_weak_form.py`): the mpmath/flint
 # reference of the truncated systems,

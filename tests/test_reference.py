@@ -164,7 +164,7 @@ def test_condition_numbers_small_n():
 def test_write_json_atomic(tmp_path):
     sols = [reference.solve_reference(0.6, "complete", 10, 25)]
     path = tmp_path / "ref.json"
-    reference.write_reference_json(path, sols, 1.0)
+    reference.write_reference_json(path, sols)
     data = json.loads(path.read_text())
     assert [p.name for p in tmp_path.iterdir()] == ["ref.json"]
     entry = data["solutions"][0]

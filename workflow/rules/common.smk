@@ -18,9 +18,10 @@ def lib(script):
     return library_files(script)
 
 
-def fig(name):
-    """PDF and PNG of one figure."""
-    return {"pdf": f"{OUT}/figures/{name}.pdf", "png": f"{OUT}/figures/{name}.png"}
+def fig(name, caption, category="Figures"):
+    """PDF and PNG of one figure; the PNG goes into the report with ``workflow/report/<caption>.rst``."""
+    png = report(f"{OUT}/figures/{name}.png", caption=f"../report/{caption}.rst", category=category)
+    return {"pdf": f"{OUT}/figures/{name}.pdf", "png": png}
 
 
 def logfile(name):

@@ -9,7 +9,7 @@ rule fig2_contours:
         style=STYLE,
         lib=lib("workflow/scripts/fig2_contours.py"),
     output:
-        **fig("fig2_{quantity}"),
+        **fig("fig2_{quantity}", "fig2"),
     params:
         b=config["contours"]["stick_radius"],
         n=FIGURE_METHOD,
@@ -35,7 +35,7 @@ rule fig3_torque_curve:
         style=STYLE,
         lib=lib("workflow/scripts/fig3_torque_curve.py"),
     output:
-        **fig("fig3_torque_curve"),
+        **fig("fig3_torque_curve", "fig3"),
         csv=f"{OUT}/data/torque_curve.csv",
     params:
         n=config["n_terms"],
@@ -56,7 +56,7 @@ rule fig4_interface:
         style=STYLE,
         lib=lib("workflow/scripts/fig4_interface.py"),
     output:
-        **fig("fig4_{quantity}"),
+        **fig("fig4_{quantity}", "fig4"),
     params:
         radii=config["interface"]["stick_radii"],
         n=FIGURE_METHOD,
@@ -79,7 +79,7 @@ rule fig_published_vs_complete:
         style=STYLE,
         lib=lib("workflow/scripts/fig_published_vs_complete.py"),
     output:
-        **fig("published_vs_complete"),
+        **fig("published_vs_complete", "published_vs_complete"),
     params:
         b=config["comparison"]["stick_radius"],
         n=config["n_terms"],
@@ -99,7 +99,7 @@ rule fig_von_mises:
         style=STYLE,
         lib=lib("workflow/scripts/fig_von_mises.py"),
     output:
-        **fig("von_mises"),
+        **fig("von_mises", "von_mises"),
     params:
         friction=config["von_mises"]["friction"],
     log:
@@ -119,7 +119,7 @@ rule fig5_cyclic:
         lib=lib("workflow/scripts/fig5_cyclic.py"),
         data=f"{OUT}/data/history.json",
     output:
-        **fig("fig5_cyclic"),
+        **fig("fig5_cyclic", "fig5"),
     log:
         logfile("fig5_cyclic"),
     resources:
@@ -137,7 +137,7 @@ rule fig_hysteresis:
         lib=lib("workflow/scripts/fig_hysteresis.py"),
         data=f"{OUT}/data/history.json",
     output:
-        **fig("hysteresis"),
+        **fig("hysteresis", "hysteresis"),
     log:
         logfile("hysteresis"),
     resources:
@@ -155,7 +155,7 @@ rule fig_work_precision:
         lib=lib("workflow/scripts/fig_work_precision.py"),
         data=f"{OUT}/data/benchmark_speed_error.json",
     output:
-        **fig("work_precision"),
+        **fig("work_precision", "work_precision"),
     log:
         logfile("work_precision"),
     resources:
@@ -173,7 +173,7 @@ rule fig_convergence:
         lib=lib("workflow/scripts/fig_convergence.py"),
         data=f"{OUT}/data/benchmark_speed_error.json",
     output:
-        **fig("convergence"),
+        **fig("convergence", "convergence"),
     log:
         logfile("convergence"),
     resources:

@@ -58,7 +58,37 @@ rule paper:
         " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
 
 
+
+
+REPORT = f"{OUT}/report.html"
+
+
+def report_targets(wildcards):
+    """Every deliverable except the report itself."""
+    return [t for t in deliverables(wildcards) if t != REPORT]
+
+
+rule report:
+    input:
+        script="workflow/scripts/build_report.py",
+        captions=sorted(str(p) for p in Path("workflow/report").glob("*.rst")),
+        targets=report_targets,
+    output:
+        REPORT,
+    params:
+        config=lambda wildcards: json.dumps(config),
+    log:
+        logfile("report"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --config-json '{params.config}' --targets {input.targets} --output {output}"
+        " > {log} 2>&1"
+
+
 localrules:
     all,
     build_macros,
     paper,
+    report,

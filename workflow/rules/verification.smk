@@ -9,6 +9,7 @@ rule reference_weak_form:
         lib=lib("workflow/scripts/reference_weak_form.py"),
     output:
         json=f"{OUT}/verification/reference_{{method}}.json",
+        timing=f"{OUT}/timings/reference_{{method}}.json",
     params:
         radii=config["reference"]["stick_radii"],
         n=config["reference"]["n_terms"],
@@ -22,7 +23,7 @@ rule reference_weak_form:
         mem_mb=2000,
     shell:
         "python {input.script} --method {wildcards.method} --stick-radii {params.radii} --n-terms {params.n}"
-        " --digits {params.digits} --json {output.json} > {log} 2>&1"
+        " --digits {params.digits} --json {output.json} --timing {output.timing} > {log} 2>&1"
 
 
 rule precision_crosscheck:
@@ -81,4 +82,41 @@ rule errata_tables:
         " --reference {input.reference} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
 
+rule reference_timing:
+    input:
+        script="workflow/scripts/timing_macros.py",
+        lib=lib("workflow/scripts/timing_macros.py"),
+        timings=expand(f"{OUT}/timings/reference_{{method}}.json", method=WEAK_FORMS),
+    output:
+        macros=f"{OUT}/macros/reference_timing.tex",
+    log:
+        logfile("reference_timing"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --timings {input.timings} --key ref-seconds --macros {output.macros} > {log} 2>&1"
+
+
 WILDCARDS["reference_weak_form"] = {"method": WEAK_FORMS}
+
+
+rule fem_validation:
+    input:
+        script="workflow/scripts/fem_validation.py",
+        lib=lib("workflow/scripts/fem_validation.py"),
+    output:
+        json=f"{OUT}/verification/fem_validation.json",
+        tex=f"{OUT}/tables/fem_validation.tex",
+        macros=f"{OUT}/macros/fem_validation.tex",
+    params:
+        radii=config["fem_validation"]["stick_radii"],
+        levels=config["fem_validation"]["mesh_levels"],
+    log:
+        logfile("fem_validation"),
+    resources:
+        runtime=20,
+        mem_mb=3000,
+    shell:
+        "python {input.script} --stick-radii {params.radii} --mesh-levels {params.levels}"
+        " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"

@@ -67,7 +67,6 @@ def main():
         "digits-predicted-max": f"{max(r['predicted_digits_lost'] for r in rounding):.1f}",
         "ref-n-terms": n_paper,
         "ref-digits": reference["solutions"][0].get("digits", ""),
-        "ref-seconds": f"{reference['seconds_total']:.0f}",
         "ref-torque-b0.6": solution["torque"][:32],
         "ref-omega-b0.6": solution["rigid_rotation"][:32],
         "cond-n-max": n_max,

@@ -111,7 +111,8 @@ def main():
             "energy": "(f p0)^2 a^3 / mu",
         },
     }
-    write_json(a.json, payload, n_terms=a.n_terms, seconds=round(time.perf_counter() - start, 2))
+    write_json(a.json, payload, n_terms=a.n_terms)
+    print(f"history data in {time.perf_counter() - start:.1f} s")
     if a.macros:
         f5, law = payload["fig5"], payload["dissipation_law"]
         loop_err = max(abs(lp["loop_work"] - lp["closed_form"]) / lp["closed_form"]

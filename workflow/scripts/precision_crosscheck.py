@@ -62,8 +62,7 @@ def main():
                     "published_minus_complete": q["torque"] - c["torque"],
                     "published_minus_complete_converged": q["torque_converged"] - c["torque_converged"]})
     payload = {
-        "reference": {"n_terms": n_terms, "digits": solutions[0].digits, "stick_radii": radii,
-                      "seconds_total": sum(sum(s.seconds.values()) for s in solutions)},
+        "reference": {"n_terms": n_terms, "digits": solutions[0].digits, "stick_radii": radii},
         "rounding": rounded(rounding, 3),
         "truncation": rounded(truncation, 12),
         "condition_numbers": rounded(conditions),

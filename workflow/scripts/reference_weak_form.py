@@ -6,6 +6,7 @@ provenance metadata.  Thin driver over ``torsional_contact.verification.referenc
 
 import argparse
 
+from torsional_contact.provenance import write_json
 from torsional_contact.verification import reference
 
 
@@ -16,10 +17,14 @@ def main():
     p.add_argument("--n-terms", type=int, required=True)
     p.add_argument("--digits", type=int, required=True)
     p.add_argument("--json", required=True)
+    p.add_argument("--timing", required=True, help="JSON of the wall times (kept apart from the data)")
     a = p.parse_args()
     solutions, seconds = reference.reference_set(a.stick_radii, methods=(a.method,), n_terms=a.n_terms,
                                                  digits=a.digits, progress=True)
-    reference.write_reference_json(a.json, solutions, seconds)
+    reference.write_reference_json(a.json, solutions)
+    write_json(a.timing, {"seconds_total": seconds,
+                          "solutions": [{"stick_radius": str(s.stick_radius), **s.seconds} for s in solutions]},
+               method=f"wall time of the {a.method} reference, N = {a.n_terms}, {a.digits} digits")
     print(f"reference ({a.method}): {len(solutions)} radii, N = {a.n_terms}, {a.digits} digits, {seconds:.1f} s")
 
 

@@ -131,7 +131,6 @@ class ReferenceSolution:
             "digits": d,
             "backend": self.backend,
             "solve_bound": None if self.solve_bound is None else float(self.solve_bound),
-            "seconds": self.seconds,
         }
 
 
@@ -230,12 +229,15 @@ def reference_set(stick_radii, methods=METHODS, n_terms=145, digits=DEFAULT_DIGI
 
 
 
-def write_reference_json(path, solutions, seconds_total: float | None = None) -> None:
-    """Write reference solutions (full-precision decimal strings) with provenance metadata, atomically."""
+def write_reference_json(path, solutions) -> None:
+    """Write reference solutions (full-precision decimal strings) with provenance metadata, atomically.
+
+    No timings: the file is the same from one build to the next (the times are in ``seconds``
+    of each solution, for a separate timing record).
+    """
     payload = {
         "description": "High-precision reference of the torsional contact series (a = 1); "
         "T* = 2T/(f F a), omega in f p0/mu, amplitudes c_n = lam_n A~_n in f p0 a/mu.",
-        "seconds_total": seconds_total,
         "solutions": [s.as_dict() for s in solutions],
     }
     digits = sorted({s.digits for s in solutions})
@@ -269,6 +271,5 @@ def load_reference_json(path) -> list[ReferenceSolution]:
                 digits=digits,
                 backend=record["backend"],
                 solve_bound=None if record["solve_bound"] is None else mpmath.mpf(record["solve_bound"]),
-                seconds=dict(record["seconds"]),
             ))
     return out

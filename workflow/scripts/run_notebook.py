@@ -1,0 +1,45 @@
+"""Execute one notebook (jupytext percent source) on the build's results; write .ipynb and HTML.
+
+The notebook runs in notebooks/ with RESULTS_DIR pointing at the build's output folder
+(relative, so no absolute path ends up in the outputs); cell timing metadata is not recorded,
+so the same results give the same files.  Execution errors fail the job.
+"""
+
+import argparse
+import os
+from pathlib import Path
+
+import jupytext
+import nbclient
+import nbformat
+from nbconvert import HTMLExporter
+
+from torsional_contact.provenance import write_text
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--notebook", required=True, help="notebooks/NAME.py")
+    p.add_argument("--results", required=True, help="the build's output folder, e.g. results")
+    p.add_argument("--ipynb", required=True)
+    p.add_argument("--html", required=True)
+    p.add_argument("--timeout", type=int, default=600, help="seconds per cell")
+    a = p.parse_args()
+    source = Path(a.notebook)
+    workdir = source.parent
+    os.environ["RESULTS_DIR"] = os.path.relpath(a.results, workdir)
+    os.environ["MPLBACKEND"] = "module://matplotlib_inline.backend_inline"  # figures inline, not Agg
+    notebook = jupytext.read(source)
+    client = nbclient.NotebookClient(notebook, kernel_name="python3", timeout=a.timeout, record_timing=False,
+                                     resources={"metadata": {"path": str(workdir)}})
+    client.execute()
+    for cell in notebook.cells:  # execution counts and ids are deterministic; drop kernel-specific noise
+        cell.get("metadata", {}).pop("execution", None)
+    write_text(a.ipynb, nbformat.writes(notebook))
+    html, _ = HTMLExporter(template_name="lab").from_notebook_node(notebook)
+    write_text(a.html, html)
+    print(f"executed {source} -> {a.ipynb}, {a.html}")
+
+
+if __name__ == "__main__":
+    main()
