@@ -19,7 +19,9 @@
 #
 # Every checked statement of the paper with its computed verdict (`correct`, `typo`,
 # `numerically-hazardous`, `incorrect`), how it was checked, and the largest discrepancy.
-# Reads `errata/errata.json` written by the workflow; set `RESULTS_DIR` for another folder.
+# Formulas are checked at 40 digits against independent computations; solutions against the
+# Abel-Fredholm solution (the truth).  Reads `errata/errata.json` written by the workflow; set
+# `RESULTS_DIR` for another folder.
 
 # %%
 import json
@@ -34,6 +36,25 @@ print(Counter(row["verdict"] for row in table))
 print("thresholds:", data["thresholds"])
 
 # %% [markdown]
+# ## The verdict rules and the reconstruction caveat
+#
+# The 'published' results are the printed equations plus this project's closure (T* fixed by
+# traction continuity at r = b), which the paper does not state.
+
+# %%
+print(data["rules"]["text"], "\n")
+print(data["closure_caveat"]["text"])
+
+# %% [markdown]
+# ## Coverage of the paper's equations 1-53
+
+# %%
+coverage = data["coverage"]
+print(f"{len(coverage['checked'])} of {len(coverage['equations'])} equations have a row")
+print("not checked (with reasons):", coverage["unchecked"] or "none")
+print("without a row or a reason:", coverage["missing"] or "none")
+
+# %% [markdown]
 # ## Everything that is not `correct`
 
 # %%
@@ -44,10 +65,19 @@ for row in table:
         print("  note: ", row["note"], "\n")
 
 # %% [markdown]
-# ## The rest, one line each
+# ## Rows that depend on the closure
+
+# %%
+for row in table:
+    if row["details"].get("depends_on_closure"):
+        print(f"({row['equation']}) {row['verdict']}")
+
+# %% [markdown]
+# ## The rest, one line each (definitions marked)
 
 # %%
 for row in table:
     if row["verdict"] == "correct":
         d = row["max_rel_discrepancy"]
-        print(f"({row['equation']}) correct" + ("" if d is None else f", {d:.1e}"))
+        kind = " (definition)" if row["details"].get("kind") == "definition" else ""
+        print(f"({row['equation']}) correct{kind}" + ("" if d is None else f", {d:.1e}"))

@@ -34,20 +34,35 @@ rule fig3_torque_curve:
         script="workflow/scripts/fig3_torque_curve.py",
         style=STYLE,
         lib=lib("workflow/scripts/fig3_torque_curve.py"),
+        csv=f"{OUT}/data/torque_curve.csv",
     output:
         **fig("fig3_torque_curve", "fig3"),
-        csv=f"{OUT}/data/torque_curve.csv",
     params:
         n=config["n_terms"],
-        n_radii=config["torque_curve"]["n_radii"],
     log:
         logfile("fig3_torque_curve"),
     resources:
-        runtime=10,
-        mem_mb=2000,
+        runtime=2,
+        mem_mb=500,
     shell:
-        "python {input.script} --n-terms {params.n} --n-radii {params.n_radii}"
-        " --style {input.style} --csv {output.csv} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+        "python {input.script} --csv {input.csv} --n-terms {params.n}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule fig_schematic:
+    input:
+        script="workflow/scripts/fig_schematic.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_schematic.py"),
+    output:
+        **fig("fig1_schematic", "fig1"),
+    log:
+        logfile("fig1_schematic"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
 
 rule fig4_interface:

@@ -1,6 +1,24 @@
 # Tables, data files and the numbers quoted in the manuscript (as LaTeX macros).
 
 
+rule torque_curve:
+    input:
+        script="workflow/scripts/torque_curve.py",
+        lib=lib("workflow/scripts/torque_curve.py"),
+    output:
+        csv=f"{OUT}/data/torque_curve.csv",
+    params:
+        n=config["n_terms"],
+        n_radii=config["torque_curve"]["n_radii"],
+    log:
+        logfile("torque_curve"),
+    resources:
+        runtime=10,
+        mem_mb=2000,
+    shell:
+        "python {input.script} --n-terms {params.n} --n-radii {params.n_radii} --csv {output.csv} > {log} 2>&1"
+
+
 rule torque_table:
     input:
         script="workflow/scripts/torque_table.py",

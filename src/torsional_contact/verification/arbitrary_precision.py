@@ -63,7 +63,7 @@ def mp_to_arb(x):
     sign, man, exp, _ = mpmath.mpf(x)._mpf_
     if man == 0:
         return flint.arb(0)
-    value = flint.arb(flint.fmpz(-man if sign else man)) * flint.arb(2) ** exp
+    value = flint.arb(flint.fmpz(int(-man if sign else man))) * flint.arb(2) ** int(exp)  # gmpy2 or int mantissa
     return value
 
 
