@@ -3,10 +3,10 @@
 T*(b) decreases monotonically from 4/3 (b = 0) to 1 (b = 1) for the Abel-Fredholm
 method and the complete weak form.  Units: b in a, T* = 2T/(f F a).
 
-* Abel-Fredholm (``invert_abel_fredholm``): a table of T*(b) on 33 radii (built once per
-  process) brackets the root, Brent's method finds it to ``B_TOLERANCE``.  Torques below
-  T*(b_max) of the largest radius the method resolves return None: the caller uses the
-  small-slip asymptotes.
+* Abel-Fredholm (``invert_abel_fredholm``): the interpolant b(tau) of ``curves`` (shipped
+  table, about 1e-14) gives b; Newton steps with the solver polish it to ``B_TOLERANCE``
+  (no or one step: one or two solves, a few ms).  Torques below T*(b_max) of the largest
+  radius the method resolves return None: the caller uses the small-slip asymptotes.
 * Weak forms (``invert_series``): the bracket is [b_lo, 1], b_lo the smallest stick disc
   the N terms resolve; a torque above T*_N(b_lo) warns (``ResolutionWarning``) and is
   bracketed down to b = 1e-6.
@@ -21,8 +21,10 @@ import numpy as np
 from scipy import optimize
 
 from .criteria import GROSS_SLIP_TORQUE
+from .curves import monotonic_curves, torque_gap_of
+from .curves.table import torque_gap
 from .diagnostics import ResolutionWarning, UnphysicalResultWarning
-from .solvers.abel_fredholm import MAX_NODES, FastSolution, default_nodes, solve_fast
+from .solvers.abel_fredholm import RESOLUTION_TOLERANCE, FastSolution, solve_fast
 from .solvers.weak_form import SeriesSolution, resolution_limit, solve_series
 
 __all__ = ["B_TOLERANCE", "largest_resolved_radius", "invert_abel_fredholm", "invert_series"]
@@ -30,40 +32,50 @@ __all__ = ["B_TOLERANCE", "largest_resolved_radius", "invert_abel_fredholm", "in
 #: Accuracy of b in the inverse problem.
 B_TOLERANCE = 1e-14
 _RELATIVE_TOLERANCE = 4 * np.finfo(float).eps
+#: Newton steps with the solver before falling back to Brent's method.
+_NEWTON_STEPS = 4
 
 
 @functools.lru_cache(maxsize=1)
 def largest_resolved_radius() -> float:
     """Largest stick radius the Abel-Fredholm method resolves with at most MAX_NODES nodes (~1 - 1.5e-6)."""
-    lo, hi = 0.99, 1.0 - 1e-12
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if default_nodes(mid) <= MAX_NODES else (lo, mid)
-    return lo
+    return monotonic_curves().b_high
 
 
-@functools.lru_cache(maxsize=1)
-def _torque_table():
-    """T*(b) of the Abel-Fredholm method on 33 radii: brackets for the inverse problem."""
-    radii = np.append(np.linspace(0.0, 1.0, 33)[:-1], largest_resolved_radius())
-    with warnings.catch_warnings():  # brackets only: T* near the cap is still good to ~1e-12
-        warnings.simplefilter("ignore", ResolutionWarning)
-        torques = np.array([solve_fast(b).torque for b in radii])
-    return radii, torques
+def _residual(solution: FastSolution, target: float, near_spinning: bool) -> float:
+    """T*(b) - target, or -(gap(b) - gap(target)) next to 4/3, where T* itself has too few digits."""
+    if near_spinning:
+        return -(torque_gap(solution) - float(torque_gap_of(target)))
+    return solution.torque - target
 
 
 def invert_abel_fredholm(target: float) -> FastSolution | None:
-    """Stick radius b with T*(b) = target, 1 < target < 4/3 (about 10 solves); None below resolution."""
-    radii, torques = _torque_table()
-    if target <= torques[-1]:
+    """Stick radius b with T*(b) = target, 1 < target < 4/3; None below the resolved slip annuli.
+
+    The interpolant b(tau) of ``curves`` (about 1e-14) is the first guess; Newton steps with
+    the Abel-Fredholm solver and the interpolated slope dT*/db polish it to ``B_TOLERANCE``
+    (usually no step or one: one or two solves).  Should the table and the solver ever
+    disagree by more than a few steps can mend, Brent's method on the solver alone decides.
+    """
+    curves = monotonic_curves()
+    if target <= curves.onset_torque:
         return None
-    upper = int(np.argmax(torques <= target))  # first radius whose torque is below the target
-    lower = max(upper - 1, 0)
+    near_spinning = target > curves.t_split
+    slope = curves.by_radius["torque"].derivative
+    b = float(curves.stick_radius(target))
     with warnings.catch_warnings():  # the probes; the answer below warns for itself
         warnings.simplefilter("ignore", ResolutionWarning)
-        b = optimize.brentq(lambda b: solve_fast(b).torque - target, radii[lower], radii[upper],
-                            xtol=B_TOLERANCE, rtol=_RELATIVE_TOLERANCE)
-    return solve_fast(b)
+        for _ in range(_NEWTON_STEPS):
+            solution = solve_fast(b)
+            step = _residual(solution, target, near_spinning) / float(slope(b))
+            if abs(step) <= B_TOLERANCE:
+                break
+            b = min(max(b - step, curves.b_low), curves.b_high)
+        else:
+            b = optimize.brentq(lambda c: _residual(solve_fast(c), target, near_spinning), curves.b_low,
+                                curves.b_high, xtol=B_TOLERANCE, rtol=_RELATIVE_TOLERANCE)
+            solution = None
+    return solve_fast(b) if solution is None or solution.resolution_estimate > RESOLUTION_TOLERANCE else solution
 
 
 def invert_series(target: float, method: str, n_terms: int) -> SeriesSolution:

@@ -15,8 +15,17 @@ The frictional work is int over the cycle of int_0^a sigma_zt ds 2 pi r dr, i.e.
     W = 2 pi * oint int_0^1 q(r) ds(r) r dr,
 
 and with q = +-1 on the slip annulus of each branch and slip monotonic on a branch,
-W(A) = 8 pi int_0^1 s_m(r; A/2) r dr for a loop of range A (Masing: independent of
-the mean torque).  Just above the cyclic-slip threshold, A = 2 (1 + eps): the slip
+W(A) = 8 pi int_0^1 s_m(r; A/2) r dr = 4 W_mono(A/2) for a loop of range A (Masing:
+independent of the mean torque; W_mono of ``curves.work``).  The torque-twist route gives
+the same number from omega_m alone: with the branches omega = omega_max - 2 omega_m(tau),
+T* = T_max - 2 tau down and their mirror images up,
+
+    W(A) = pi oint T* d omega = pi [2 A omega_m(A/2) - 8 int_1^(A/2) omega_m(t) dt],
+
+(``dissipation_from_loop_area``); the two routes share no computation beyond the
+Abel-Fredholm solutions themselves (the slip on one side, omega(b) and T*(b) on the other).
+
+Just above the cyclic-slip threshold, A = 2 (1 + eps): the slip
 annulus is an edge crack of depth delta = 1 - b in anti-plane shear (the free
 surface r = 1 reflects it into a centre crack of length 2 delta) loaded by
 T* (1 - x) - 1 ~ eps - x; a bounded (K_III = 0) tip needs delta = pi eps / 2, the slip
@@ -44,15 +53,19 @@ from scipy import special
 from .. import validation
 from ..backends import Series
 from ..criteria import GROSS_SLIP_TORQUE
+from ..curves import monotonic_curves
 from ..quadrature import gauss_legendre_panels
 from ..special.zeros import bessel_j2_zeros
-from .memory import InterfaceState, monotonic
+from .memory import InterfaceState
+from .monotonic import point, resolve
 
 __all__ = [
     "slip_increments",
     "cumulative_slip",
     "frictional_work",
+    "loading_work",
     "dissipation_per_cycle",
+    "dissipation_from_loop_area",
     "threshold_asymptotics",
 ]
 
@@ -82,21 +95,26 @@ def cumulative_slip(states: Sequence[InterfaceState], r, *, start: InterfaceStat
     return np.sum(np.abs(slip_increments(states, r, start=start)), axis=0)
 
 
-def _radial_rule(n_terms: int | None):
-    """Composite Gauss-Legendre rule on [0, 1] with panels of 20 / lam_N (32 nodes each).
+def _radial_rule(states: Sequence[InterfaceState]):
+    """Composite Gauss-Legendre on [0, 1] for products of interface fields of ``states``.
 
-    The truncated series are entire functions of r whose products oscillate at most like
-    exp(2 i lam_N r), so this rule integrates them to rounding error.
+    Weak forms: panels of 20 / lam_N (the truncated series are entire functions of r whose
+    products oscillate at most like exp(2 i lam_N r)).  Abel-Fredholm: panels of 0.05 split
+    at every stick radius involved, where traction and slip have (r - b)^(1/2) and
+    (r - b)^(3/2) end behaviour.
     """
-    return gauss_legendre_panels(0.0, 1.0, 20.0 / bessel_j2_zeros(n_terms)[-1])
+    if states[0].n_terms is not None and states[0].method != "fast":
+        return gauss_legendre_panels(0.0, 1.0, 20.0 / bessel_j2_zeros(states[0].n_terms)[-1])
+    radii = {point(tau, s.method, s.n_terms)[0] for s in states for _, tau in s.terms}
+    return gauss_legendre_panels(0.0, 1.0, 0.05, sorted(radii))
 
 
 def _interface_fields(states, nodes):
     """Traction and slip of every state at ``nodes``, each distinct monotonic solution evaluated once.
 
-    Partial-slip solutions are summed with one shared matrix J1(lam_n r_i) (the same
-    sums as ``Solution.traction`` / ``Solution.slip`` on z = 0, eqs. 25-26, without
-    their per-call Bessel evaluations); other regimes use the ``Solution`` methods.
+    Partial-slip weak-form solutions are summed with one shared matrix J1(lam_n r_i) (the
+    same sums as ``Solution.traction`` / ``Solution.slip`` on z = 0, eqs. 25-26, without
+    their per-call Bessel evaluations); other solutions use the ``Solution`` methods.
     """
     bessel = None
     memo: dict[int, tuple[np.ndarray, np.ndarray]] = {}
@@ -128,17 +146,17 @@ def frictional_work(states: Sequence[InterfaceState]) -> float:
 
     The frictional work along the sampled path ``states`` (trapezoidal rule in time,
     composite Gauss-Legendre in r), from the tractions and slips of the states alone
-    (omega is used only through the slip).  For a closed loop it equals ``loop_work``
-    up to the r-quadrature error whatever the sampling: with the traction (ii) and
-    displacement (i) of ``solvers.weak_form`` the work of q on the eigenfunction part of the
-    slip is the change of the elastic energy sum_n lam_n h_n c_n^2 / 2, which the
-    trapezoidal rule telescopes exactly, and the work on the rigid part is pi T* d omega
-    (int_0^1 r^2 J1(lam_n r) dr = 0).  The independent check of both is
-    ``dissipation_per_cycle`` (friction law + memory rules).
+    (omega is used only through the slip): an independent check of
+    ``InterfaceState.dissipated_energy`` (second order in the sampling of the path).
+    For the weak forms and a closed loop it equals ``loop_work`` to rounding whatever
+    the sampling: with the traction (ii) and displacement (i) of ``solvers.weak_form`` the
+    work of q on the eigenfunction part of the slip is the change of the elastic energy
+    sum_n lam_n h_n c_n^2 / 2, which the trapezoidal rule telescopes exactly, and the work
+    on the rigid part is pi T* d omega (int_0^1 r^2 J1(lam_n r) dr = 0).
     """
     if len(states) < 2:
         return 0.0
-    nodes, weights = _radial_rule(states[0].n_terms)
+    nodes, weights = _radial_rule(states)
     fields = _interface_fields(states, nodes)
     total = 0.0
     for (q0, s0), (q1, s1) in zip(fields[:-1], fields[1:], strict=True):
@@ -146,8 +164,24 @@ def frictional_work(states: Sequence[InterfaceState]) -> float:
     return 2.0 * math.pi * total
 
 
+def loading_work(tau, *, method=None, n_terms=None) -> float:
+    """W_mono(tau) = 2 pi int_b^1 s_m(r; tau) r dr: work against friction of a monotonic loading to tau.
+
+    Units (f p0)^2 a^3 / mu; 0 for tau <= 1, +inf at tau = 4/3 (spinning).  Default method:
+    the interpolant of ``curves`` (eq. (W2) of ``curves.work``); weak forms: quadrature of
+    their slip.
+
+    Raises
+    ------
+    ValueError
+        If tau is not finite or outside [0, 4/3].
+    """
+    value = validation.real_number("tau", tau, 0.0, GROSS_SLIP_TORQUE)
+    return point(value, *resolve(method, n_terms))[2]
+
+
 def dissipation_per_cycle(torque_range, *, method=None, n_terms=None) -> float:
-    """W(A) = 8 pi int_0^1 s_m(r; A/2) r dr ((f p0)^2 a^3 / mu), zero for A <= 2.
+    """W(A) = 8 pi int_0^1 s_m(r; A/2) r dr = 4 W_mono(A/2) ((f p0)^2 a^3 / mu), zero for A <= 2.
 
     The energy dissipated per closed loop of range A (any mean torque): on each half
     cycle the traction is the friction limit on the slip annulus and the slip increment
@@ -159,14 +193,26 @@ def dissipation_per_cycle(torque_range, *, method=None, n_terms=None) -> float:
         If A is not finite or outside [0, 8/3].
     """
     value = validation.real_number("torque_range", torque_range, 0.0, 2 * GROSS_SLIP_TORQUE)
-    mono = monotonic(value / 2.0, method=method, n_terms=n_terms)
-    if mono.regime == "stick":
+    return 4.0 * loading_work(value / 2.0, method=method, n_terms=n_terms)
+
+
+def dissipation_from_loop_area(torque_range) -> float:
+    """pi times the area of the loop of range A in the (omega, T*) plane (module docstring).
+
+    pi [2 A omega_m(A/2) - 8 int_1^(A/2) omega_m dt] from the Abel-Fredholm curves omega(b)
+    and T*(b) (``curves.MonotonicCurves.rotation_integral``); no slip profile is used.
+
+    Raises
+    ------
+    ValueError
+        If A is not finite or outside [0, 8/3].
+    """
+    value = validation.real_number("torque_range", torque_range, 0.0, 2 * GROSS_SLIP_TORQUE)
+    tau = value / 2.0
+    if tau <= 1.0:
         return 0.0
-    # the series' slip oscillates on the scale 1 / lam_N; the fast slip is smooth
-    series = isinstance(mono.backend, Series)
-    width = 20.0 / mono.backend.solution.eigenvalues[-1] if series else 0.05
-    nodes, weights = gauss_legendre_panels(mono.stick_radius, 1.0, width, ())
-    return float(8.0 * math.pi * np.sum(mono.slip(nodes) * nodes * weights))
+    curves = monotonic_curves()
+    return math.pi * (2.0 * value * curves.rotation(tau) - 8.0 * curves.rotation_integral(tau))
 
 
 def threshold_asymptotics(eps):

@@ -16,12 +16,15 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
+from ..curves import monotonic_curves
+from ..curves.interpolant import ONSET_DELTA
 from ..diagnostics import ResolutionWarning
 from ..solution import solve
 from ..solvers.weak_form import resolution_limit
 from .memory import (
     CYCLIC_SLIP_RANGE,
     InterfaceState,
+    _branch,
     _closure,
     _compose,
     _limit,
@@ -30,20 +33,33 @@ from .memory import (
     _start,
     advance,
     history,
-    monotonic,
 )
+from .monotonic import point, register
 
 __all__ = ["sample_path", "Loop", "hysteresis_loop", "loop_work", "tangent_compliance", "relaxation_profiles"]
 
 
 # --------------------------------------------------------------------------- dense paths
-def _stick_radius_grid(b_start: float, b_end: float, n_points: int, n_terms: int) -> np.ndarray:
+def _stick_radius_grid(b_start: float, b_end: float, n_points: int, b_max: float) -> np.ndarray:
     """Interior stick radii from b_start (exclusive) down to b_end (exclusive), resolved ones only."""
-    _, b_max = resolution_limit(n_terms)
     upper = min(b_start, b_max)
     if upper <= b_end:
         return np.empty(0)
     return np.linspace(upper, b_end, n_points + 1)[:-1][1 if upper == b_start else 0 :]
+
+
+def _increments(b_a: float, b_b: float, n_points: int, method: str, n_terms) -> list[float]:
+    """Monotonic torques tau at the interior stick radii of a slipping stretch (see ``sample_path``)."""
+    if method == "fast":
+        curves = monotonic_curves()
+        radii = _stick_radius_grid(b_a, b_b, n_points, 1.0 - ONSET_DELTA)  # annuli the solver resolves well
+        return [float(t) for t in np.atleast_1d(curves.torque(radii))] if radii.size else []
+    out = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResolutionWarning)  # only resolved radii are requested
+        for b in _stick_radius_grid(b_a, b_b, n_points, resolution_limit(n_terms)[1]):
+            out.append(register(solve(stick_radius=float(b), method=method, n_terms=n_terms)))
+    return out
 
 
 def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[InterfaceState, ...]:
@@ -51,42 +67,39 @@ def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[Inte
 
     Stick stretches are represented by their end points (there omega and slip are
     constant and the traction is linear in T*); slipping stretches by ``n_points``
-    states equally spaced in the stick radius (solved directly for b, no inversion)
-    between the resolved limit 1 - 10/lam_N and the end.  Closed loops met on the way
-    are erased exactly as in ``advance``.
+    states equally spaced in the stick radius (no inversion: T*(b) from ``curves`` for the
+    default method, solved for b for the weak forms, up to their resolved limit).  Closed
+    loops met on the way are erased exactly as in ``advance``; every state carries the
+    energy dissipated up to it.
     """
     t = validation.torque("torque", torque)
     if t == state.torque:
         return ()
+    method, n_terms = state.method, state.n_terms
     d = _sign(t - state.torque)
     stack = _start(state, d)
-    current = state.torque
+    current, energy = state.torque, state.dissipated_energy
     out: list[InterfaceState] = []
     while True:
-        limit = _limit(stack) if stack else None
-        closes = limit is not None and d * (t - limit) >= 0
-        end = limit if closes else t
-        origin, factor = (stack[-1].torque, 2.0) if stack else (0.0, 1.0)
-        tau_a, tau_b = abs(current - origin) / factor, abs(end - origin) / factor
-        mono_a = monotonic(min(tau_a, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
-        mono_b = monotonic(min(tau_b, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
-        if tau_a < 1.0 < tau_b:  # stick stretch ends at the slip onset
-            onset = monotonic(1.0, method=state.method, n_terms=state.n_terms)
-            out.append(_compose(stack, d, onset, origin + d * factor, state.method, state.n_terms))
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ResolutionWarning)  # only resolved radii are requested
-            for b in _stick_radius_grid(mono_a.stick_radius, mono_b.stick_radius, n_points, state.n_terms):
-                mono = solve(stick_radius=float(b), method=state.method, n_terms=state.n_terms)
-                out.append(_compose(stack, d, mono, origin + d * factor * mono.torque, state.method, state.n_terms))
-        if closes:
-            out.append(_closure(stack, d, end, state.method, state.n_terms))
-            if end == t:
-                return tuple(out)
-            _pop(stack)
-            current = end
-            continue
-        out.append(_compose(stack, d, mono_b, t, state.method, state.n_terms))
-        return tuple(out)
+        origin, g = _branch(stack)
+        closes = bool(stack) and d * (t - _limit(stack)) >= 0
+        end = _limit(stack) if closes else t
+        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, GROSS_SLIP_TORQUE)
+        (b_a, _, work_a), (b_b, _, work_b) = point(tau_a, method, n_terms), point(tau_b, method, n_terms)
+        taus = [1.0] if tau_a < 1.0 < tau_b else []  # a stick stretch ends at the slip onset
+        taus += _increments(b_a, b_b, n_points, method, n_terms)
+        for tau in taus:
+            w = energy + g * (point(tau, method, n_terms)[2] - work_a)
+            out.append(_compose(stack, d, tau, origin + d * g * tau, w, method, n_terms))
+        energy += g * (work_b - work_a)
+        if not closes:
+            out.append(_compose(stack, d, tau_b, t, energy, method, n_terms))
+            return tuple(out)
+        out.append(_closure(stack, d, end, energy, method, n_terms))
+        if end == t:
+            return tuple(out)
+        _pop(stack)
+        current = end
 
 
 # --------------------------------------------------------------------------- hysteresis
@@ -148,16 +161,24 @@ def tangent_compliance(state: InterfaceState, *, step: float = 1e-4) -> float:
 
     On a branch omega = omega_k + 2 d omega_m(tau), T* = T_k + 2 d tau, so the slope is
     omega_m'(tau) on every branch and on the virgin curve (zero while the branch
-    sticks): central differences in the stick radius, omega_m'(b) / T*'(b).  At a
-    loop-closure point (see ``InterfaceState.front``) it is the slope of the outer
-    branch that continues beyond it.
+    sticks): omega'(b) / T*'(b), from the derivatives of the interpolants of ``curves``
+    for the default method (the small-slip form (pi^3/4)(T* - 1)^2 below their range),
+    by central differences of width ``step`` in b for the weak forms.  At a loop-closure
+    point (see ``InterfaceState.front``) it is the slope of the outer branch that
+    continues beyond it.
     """
-    mono = state.components[-1][1]
-    b = mono.stick_radius
+    tau = state.terms[-1][1]
+    b = point(tau, state.method, state.n_terms)[0]
     if b >= 1.0:
         return 0.0
     if b <= 0.0:
         return math.inf
+    if state.method == "fast":
+        curves = monotonic_curves()
+        if b > curves.b_high:
+            return math.pi**3 / 4.0 * (tau - 1.0) ** 2
+        rotation, torque = curves.by_radius["rigid_rotation"], curves.by_radius["torque"]
+        return float(rotation.derivative(b) / torque.derivative(b))
     h = min(step, b / 2, (1 - b) / 2)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)

@@ -60,13 +60,26 @@ omega_m(tau), stick radius b(tau) (b = 1 for tau <= 1).
    continues on the skeleton.  The rules are the rainflow stack rules.
 
 Each state is thus a short linear combination of monotonic solutions (one per stack
-level); traction, slip, stresses and omega are the same combinations.  The stick
+level); traction, slip, stresses and omega are the same combinations.  The numbers of a
+state need only b(tau), omega_m(tau) and W_mono(tau) (``histories.monotonic``: interpolants
+of ``curves`` for the default method), the profiles the solutions themselves, built on
+first use.  The stick
 radius of a state is b of its current branch (1 when the current branch has not
 slipped); the slip fronts remembered are the stick radii at which the remembered
 branches ended.  A loop is erased when its branch *reaches* the earlier turning point
 (equality included, so repeated cycles between the same torques keep a bounded
 stack); the state there is the earlier state itself, with the stick radius of the
 closing branch (1 for a range <= 2: no slip during that half cycle).
+
+5. *Dissipated energy.*  On the virgin curve every slipping point carries traction +-1 and
+   the slip grows monotonically: the work against friction up to |T| is W_mono(|T|).  On
+   a branch from T_k the traction is -+1 where the increment 2 d mono(tau) slips and the
+   slip increment is 2 d s_m(r; tau): the work is 2 pi int 1 * 2 s_m r dr = 2 W_mono(tau)
+   (the friction limit is the old one reversed, not twice it).  So a stretch of a
+   branch (g = 2) or of the virgin curve (g = 1, origin 0) from tau_a to tau_b adds
+   g [W_mono(tau_b) - W_mono(tau_a)], a closed loop of range A adds
+   W(A) = 4 W_mono(A/2), and ``dissipated_energy`` of a state is the sum over its whole
+   path since the virgin state (it does not return when a loop closes).
 
 Independent check: ``verification.incremental`` solves the incremental mixed problem (no slip on
 0 <= r < c relative to the remembered displacement, traction -+1 on c < r <= 1)
@@ -88,7 +101,8 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
-from ..solution import DEFAULT_N_TERMS, Solution, solve
+from ..solution import Solution
+from .monotonic import DEFAULT_METHOD, monotonic, point, resolve
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -102,37 +116,8 @@ __all__ = [
     "turning_points",
 ]
 
-#: Default formulation of the histories: the complete weak form at the paper's N.  Its
-#: truncated series makes the loop-area / frictional-work identity exact and is what the
-#: direct incremental solve (``verification.incremental``) checks; ``method="fast"`` is accepted
-#: everywhere and gives the more accurate monotonic solutions of ``solvers.abel_fredholm``.
-DEFAULT_METHOD = "complete"
-
 #: Torque range above which a reversal slips again (twice the slip-onset torque).
 CYCLIC_SLIP_RANGE = 2.0
-_ONSET_ULPS = 8
-
-
-# --------------------------------------------------------------------------- monotonic
-@functools.lru_cache(maxsize=4096)
-def _monotonic_cached(tau: float, method: str, n_terms: int) -> Solution:
-    return solve(torque=tau, method=method, n_terms=n_terms)
-
-
-def monotonic(tau: float, *, method=None, n_terms=None) -> Solution:
-    """mono(tau): the monotonic solution at torque tau in [0, 4/3], friction limit 1 (cached).
-
-    A tau within a few ulps of the slip onset 1 (e.g. (1.23 - (1.23 - 2)) / 2) is taken
-    as 1: rounding must not open an unresolvable slip annulus.
-    """
-    tau = validation.torque("tau", tau)
-    if tau < 0:
-        raise ValueError(f"tau must lie in [0, 4/3], got {tau!r}")
-    if abs(tau - 1.0) <= _ONSET_ULPS * np.finfo(float).eps:
-        tau = 1.0
-    method = DEFAULT_METHOD if method is None else method
-    n_terms = DEFAULT_N_TERMS if n_terms is None else n_terms
-    return _monotonic_cached(tau, method, n_terms)
 
 
 # --------------------------------------------------------------------------- states
@@ -160,25 +145,34 @@ class InterfaceState:
         +1 (torque increasing), -1 (decreasing), 0 (virgin state, no step yet).
     memory : tuple of TurningPoint
         The stack of remembered turning points, oldest first.
-    components : tuple of (float, Solution)
-        The state as sum_j w_j mono(tau_j) (weights +-1 on the virgin curve, +-2 on
-        branches).
+    terms : tuple of (float, float)
+        The state as sum_j w_j mono(tau_j): pairs (w_j, tau_j) (weights +-1 on the virgin
+        curve, +-2 on branches).
+    method, n_terms :
+        The monotonic solutions' method (``fast``: n_terms None) and resolution.
     front : float
         Slip front of the (Masing) branch the state lies on; remembered as the slip
         front of this state if the torque reverses here.  Equal to ``stick_radius``
         except where a branch has just closed a loop exactly at an earlier turning
         point: the state is then that earlier state (with its front) while the stick
         radius is that of the closing branch (1 if its range was <= 2).
+    rigid_rotation : float
+        omega (f p0 / mu): the same combination of the monotonic omegas; +-inf after spinning.
+    dissipated_energy : float
+        Work against friction since the virgin state, first loading included
+        ((f p0)^2 a^3 / mu; rule 5 of the module docstring); +inf after spinning.
     """
 
     torque: float
     stick_radius: float
     direction: int
     memory: tuple[TurningPoint, ...]
-    components: tuple[tuple[float, Solution], ...] = field(repr=False)
+    terms: tuple[tuple[float, float], ...] = field(repr=False)
     method: str = DEFAULT_METHOD
-    n_terms: int = DEFAULT_N_TERMS
+    n_terms: int | None = None
     front: float = 1.0
+    rigid_rotation: float = 0.0
+    dissipated_energy: float = 0.0
 
     @property
     def regime(self) -> str:
@@ -196,10 +190,10 @@ class InterfaceState:
     def turning_torques(self) -> tuple[float, ...]:
         return tuple(tp.torque for tp in self.memory)
 
-    @property
-    def rigid_rotation(self) -> float:
-        """omega (f p0 / mu): the same combination of the monotonic omegas; +-inf after spinning."""
-        return float(sum(w * s.rigid_rotation for w, s in self.components))
+    @functools.cached_property
+    def components(self) -> tuple[tuple[float, Solution], ...]:
+        """The pairs (w_j, mono(tau_j)) with the monotonic solutions (built on first use, cached)."""
+        return tuple((w, monotonic(tau, method=self.method, n_terms=self.n_terms)) for w, tau in self.terms)
 
     def traction(self, r):
         """sigma_zt(r, 0) / (f p0)."""
@@ -232,27 +226,29 @@ class InterfaceState:
         return sum(w * s.displacement(r, z) for w, s in self.components)
 
     def as_dict(self) -> dict:
-        """JSON-ready summary (non-finite rotation -> None)."""
-        omega = self.rigid_rotation
+        """JSON-ready summary (non-finite numbers -> None)."""
         return {
             "torque": self.torque,
             "stick_radius": self.stick_radius,
             "slip_fronts": list(self.slip_fronts),
             "turning_points": list(self.turning_torques),
-            "rigid_rotation": omega if math.isfinite(omega) else None,
+            "rigid_rotation": _finite_or_none(self.rigid_rotation),
             "regime": self.regime,
+            "dissipated_energy": _finite_or_none(self.dissipated_energy),
             "direction": self.direction,
             "method": self.method,
             "n_terms": self.n_terms,
         }
 
 
+def _finite_or_none(value: float):
+    return value if math.isfinite(value) else None
+
+
 def initial_state(*, method=None, n_terms=None) -> InterfaceState:
-    """The virgin interface: T* = 0, no slip, nothing remembered."""
-    method = DEFAULT_METHOD if method is None else method
-    n_terms = DEFAULT_N_TERMS if n_terms is None else n_terms
-    zero = monotonic(0.0, method=method, n_terms=n_terms)
-    return InterfaceState(0.0, 1.0, 0, (), ((1.0, zero),), method, n_terms, 1.0)
+    """The virgin interface: T* = 0, no slip, nothing remembered, no energy dissipated."""
+    method, n_terms = resolve(method, n_terms)
+    return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), method, n_terms, 1.0, 0.0, 0.0)
 
 
 def _sign(x: float) -> int:
@@ -279,32 +275,39 @@ def _start(state: InterfaceState, direction: int) -> list[TurningPoint]:
     return stack
 
 
-def _compose(stack, direction, mono: Solution, torque: float, method, n_terms) -> InterfaceState:
-    """State on the branch from the top of ``stack`` (or the virgin curve) with increment ``mono``."""
+def _branch(stack) -> tuple[float, float]:
+    """(origin torque, factor g) of the current branch: the last turning point and 2, or the virgin curve."""
+    return (stack[-1].torque, 2.0) if stack else (0.0, 1.0)
+
+
+def _compose(stack, direction, tau, torque, energy, method, n_terms) -> InterfaceState:
+    """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau."""
+    b, omega, _ = point(tau, method, n_terms)
     if stack:
         origin = stack[-1].state
-        components = origin.components + ((2.0 * direction, mono),)
+        terms = origin.terms + ((2.0 * direction, tau),)
+        omega = origin.rigid_rotation + 2.0 * direction * omega
     else:
-        components = ((float(direction), mono),)
-    return InterfaceState(
-        torque, mono.stick_radius, direction, tuple(stack), components, method, n_terms, mono.stick_radius
-    )
+        terms = ((float(direction), tau),)
+        omega = direction * omega
+    return InterfaceState(torque, b, direction, tuple(stack), terms, method, n_terms, b, omega, energy)
 
 
-def _closure(stack, direction, torque, method, n_terms) -> InterfaceState:
+def _closure(stack, direction, torque, energy, method, n_terms) -> InterfaceState:
     """State where the branch from the top of ``stack`` reaches its limit exactly (rule 4).
 
     It is the earlier state at that torque (the inner loop cancels exactly: the same
     monotonic solutions with opposite weights), or the mirrored virgin state for a
-    single remembered point; the stick radius is that of the closing branch.
+    single remembered point; the stick radius is that of the closing branch; the
+    dissipated energy is the one accumulated on the way.
     """
-    closing = monotonic(abs(torque - stack[-1].torque) / 2.0, method=method, n_terms=n_terms)
+    closing, _, _ = point(abs(torque - stack[-1].torque) / 2.0, method, n_terms)
     if len(stack) >= 2:
         earlier = stack[-2].state
     else:
-        virgin = monotonic(abs(torque), method=method, n_terms=n_terms)
-        earlier = _compose([], direction, virgin, torque, method, n_terms)
-    return dataclasses.replace(earlier, torque=torque, stick_radius=closing.stick_radius, direction=direction)
+        earlier = _compose([], direction, abs(torque), torque, energy, method, n_terms)
+    return dataclasses.replace(earlier, torque=torque, stick_radius=closing, direction=direction,
+                               dissipated_energy=energy)
 
 
 def advance(state: InterfaceState, torque) -> InterfaceState:
@@ -319,7 +322,8 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     Returns
     -------
     InterfaceState
-        By the memory rules of the module docstring (loops closed on the way are erased).
+        By the memory rules of the module docstring (loops closed on the way are erased;
+        the energy dissipated on the way is added, rule 5).
 
     Raises
     ------
@@ -329,15 +333,22 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     t = validation.torque("torque", torque)
     if t == state.torque:
         return state
+    method, n_terms = state.method, state.n_terms
     d = _sign(t - state.torque)
     stack = _start(state, d)
-    while stack and d * (t - _limit(stack)) > 0:
+    current, energy = state.torque, state.dissipated_energy
+    while True:
+        origin, g = _branch(stack)
+        closes = bool(stack) and d * (t - _limit(stack)) >= 0
+        end = _limit(stack) if closes else t
+        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, GROSS_SLIP_TORQUE)
+        energy += g * (point(tau_b, method, n_terms)[2] - point(tau_a, method, n_terms)[2])
+        if not closes:
+            return _compose(stack, d, tau_b, t, energy, method, n_terms)
+        if end == t:
+            return _closure(stack, d, t, energy, method, n_terms)
         _pop(stack)
-    if stack and t == _limit(stack):
-        return _closure(stack, d, t, state.method, state.n_terms)
-    tau = abs(t - stack[-1].torque) / 2.0 if stack else abs(t)
-    mono = monotonic(min(tau, GROSS_SLIP_TORQUE), method=state.method, n_terms=state.n_terms)
-    return _compose(stack, d, mono, t, state.method, state.n_terms)
+        current = end
 
 
 def history(torques, *, method=None, n_terms=None, start: InterfaceState | None = None) -> tuple[InterfaceState, ...]:
@@ -345,13 +356,17 @@ def history(torques, *, method=None, n_terms=None, start: InterfaceState | None 
 
     Parameters
     ----------
-    torques : sequence of float
+    torques : sequence or array of float
         T* after each step (turning points, or any points: consecutive points in the
         same direction are simply one branch sampled more finely).  Each in [-4/3, 4/3].
-    method, n_terms :
-        Passed to ``solve`` for the monotonic solutions.
+        A long sampled signal is better served by ``histories.signal.analyse_signal``
+        (arrays instead of objects, the same numbers).
+    method : {"fast", "complete", "published"}, optional
+        The monotonic solutions: ``fast`` (default, the Abel-Fredholm method through the
+        interpolants of ``curves``) or a weak form at ``n_terms`` (default 145).
+    n_terms : int, optional
     start : InterfaceState, optional
-        Continue from this state instead of the virgin interface.
+        Continue from this state instead of the virgin interface (its method is kept).
 
     Returns
     -------
@@ -360,7 +375,8 @@ def history(torques, *, method=None, n_terms=None, start: InterfaceState | None 
     Raises
     ------
     ValueError
-        Naming ``torques[i]`` for a non-finite entry or |T*| > 4/3; for an empty history.
+        Naming ``torques[i]`` for a non-finite entry or |T*| > 4/3; for an empty history;
+        for an unknown method or n_terms < 1.
     """
     values = validation.torque_sequence("torques", torques)
     state = initial_state(method=method, n_terms=n_terms) if start is None else start
@@ -383,13 +399,7 @@ def turning_points(signal) -> np.ndarray:
     ValueError
         For an empty signal, non-finite samples or |T*| > 4/3 (naming ``signal[i]``).
     """
-    values = np.array(validation.torque_sequence("signal", signal))
-    keep = np.concatenate([[True], np.diff(values) != 0])
-    values = values[keep]
-    if values.size <= 2:
-        return values
-    step = np.sign(np.diff(values))
-    reversal = step[1:] != step[:-1]
-    return np.concatenate([[values[0]], values[1:-1][reversal], [values[-1]]])
+    from .signal import turning_point_indices, validated_signal
 
-
+    values = validated_signal("signal", signal)
+    return values[turning_point_indices(values)]

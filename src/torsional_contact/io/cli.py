@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
 import sys
 import warnings
 
@@ -51,14 +52,24 @@ def _cmd_solve(args) -> dict:
     return _profiles(solution.as_dict(), solution, args.radii)
 
 
-def _cmd_history(args) -> list:
+def _cmd_history(args):
+    """``history``: states at the given turning points, or the analysis of a sampled signal (``--signal``)."""
     from .. import validation
     from ..histories import history
 
-    torques = validation.torque_sequence("--turning-points", args.turning_points)
-    states = history(torques, method=args.method, n_terms=args.n_terms)
-    fields = ("traction", "slip", "residual_traction")
-    return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
+    if args.signal is None:
+        if args.output is not None:
+            raise UsageError("--output needs --signal (the per-sample table of a sampled signal)")
+        torques = validation.torque_sequence("--turning-points", args.turning_points)
+        states = history(torques, method=args.method, n_terms=args.n_terms)
+        fields = ("traction", "slip", "residual_traction")
+        return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
+    if args.radii is not None:
+        raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
+    from .history_signal import analyse_file
+
+    return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
+                        progress=not args.no_progress, full=args.json)
 
 
 _MAX_REFERENCE_DIGITS = 1000
@@ -106,6 +117,18 @@ def _cmd_errata(args) -> list:
     return errata_table()
 
 
+#: A negative number as argparse should read it: -1, -.5, -1e0, -1.5E-3, -inf, -nan (case-insensitive).
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*(e[-+]?\d+)?|\.\d+(e[-+]?\d+)?|inf(inity)?|nan)$", re.IGNORECASE)
+
+
+def _accept_negative_numbers(parser) -> None:
+    """Let ``parser`` read "-1e0" or "-inf" as values, not options (argparse knows only -1 and -1.5).
+
+    Safe for a parser none of whose options looks like a negative number.
+    """
+    parser._negative_number_matcher = _NEGATIVE_NUMBER
+
+
 def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
     p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
@@ -126,9 +149,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
     p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
-    p.add_argument("--turning-points", type=float, nargs="+", required=True, help="T* after each step, in [-4/3, 4/3]")
+    _accept_negative_numbers(p)
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("--turning-points", type=float, nargs="+", help="T* after each step, in [-4/3, 4/3]")
+    source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line, or a .npy array")
+    p.add_argument("--output", help="with --signal: CSV of the twist and dissipated energy at every sample")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
-    p.add_argument("--json", action="store_true", help="print a JSON list, one state per turning point")
+    p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision (mpmath) solution of the truncated system")
     p.add_argument("--stick-radius", required=True, help="b/a in (0, 1), read as a decimal")

@@ -1,0 +1,282 @@
+r"""The monotonic curves as cheap exact functions: by stick radius and by torque.
+
+Units: b in a; T* = 2T/(f F a); omega in f p0 / mu; W_mono in (f p0)^2 a^3 / mu.
+
+Everything the memory rules of ``histories`` need from the monotonic solution, besides
+the interface profiles, is the stick radius b(tau), the rigid rotation omega_m(tau) and the
+work against friction W_mono(tau) of a monotonic loading to 0 <= tau <= 4/3 (``curves.work``).
+They are piecewise Chebyshev series (``curves.piecewise``) built from the Abel-Fredholm
+solver (``curves.table``):
+
+* by stick radius, on panels in b (the table's solves);
+* by torque, on the images of those panels: in tau itself where b >= 0.26, and in
+  u = (4/3 - tau)^(1/3) closer to spinning, where b is nearly proportional to u
+  (4/3 - T* ~ (16/(9 pi)) b^3) and omega ~ (1/2) ln(1/b) is smooth on each geometric
+  panel; 4/3 - tau is formed with a compensated product so that u keeps its relative
+  accuracy next to 4/3.
+
+Beyond the table
+----------------
+* Slip annuli delta = 1 - b < ``ONSET_DELTA`` = 2e-5 (1 < tau < 1 + 1.3e-5): the small-slip
+  asymptotes (energy docstring of ``histories.energy``), with coefficients read off the
+  table where it is accurate (3e-5 < delta < 1e-3):
+  T* - 1 = (2/pi) delta + delta^2 / 8 (the fit gives 0.12500 +- 1e-5 for the second
+  coefficient; the next term, about -2 delta^3 ln(1/delta), is below 2e-14),
+  omega = (pi^3/12) e^3 (e = T* - 1; absolute error O(e^4) < 1e-19) and
+  W_mono = (pi^4/12) e^3 (1 + 0.04 e) (relative error ~1e-2 e < 2e-7).  There the solver
+  itself loses digits (T* noise up to 3e-12 next to b_max, where it warns that its
+  Chebyshev tail is large), so the asymptotes are the more accurate of the two.
+* tau within 4 ulp of 4/3 is spinning (as in ``solve``): b = 0, omega = W_mono = +inf.
+* By radius, 0 < b < 1e-6: 4/3 - T* and omega, W_mono continued from the first panel by
+  their small-disc forms (b^3 and ln(1/b) growth, relative corrections O(b^2)).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from ..criteria import GROSS_SLIP_TORQUE
+from .piecewise import Piecewise
+from .table import TABLE_PATH, lobatto_coefficients, read_table
+
+__all__ = ["MonotonicCurves", "monotonic_curves", "torque_gap_of", "add_by_torque"]
+
+#: Relative distance to 4/3 that counts as spinning (``validation.TORQUE_TOLERANCE``).
+SPIN_TOLERANCE = 4 * np.finfo(float).eps
+#: delta^2 coefficient of T* - 1 at small slip annuli (fitted to the table, see the docstring).
+ONSET_SECOND = 0.125
+#: e coefficient of W_mono / ((pi^4/12) e^3) - 1 at small slip annuli (fitted, see the docstring).
+ONSET_WORK = 0.04
+#: Slip annuli narrower than this use the small-slip asymptotes.
+ONSET_DELTA = 2e-5
+#: b at which the by-torque panels switch from tau to u = (4/3 - tau)^(1/3).
+U_SPLIT_RADIUS = 0.262144
+_TWO_OVER_PI = 2.0 / math.pi
+_OMEGA_ONSET = math.pi**3 / 12.0
+_WORK_ONSET = math.pi**4 / 12.0
+_BY_TORQUE_POINTS = 65
+_CURVES_BY_TORQUE = ("stick_radius", "rigid_rotation", "loading_work")
+
+
+def torque_gap_of(tau):
+    """4/3 - tau to a few ulp of the result (compensated: 3 tau = s + e exactly, 4 - s exact)."""
+    tau = np.asarray(tau, dtype=float)
+    double = 2.0 * tau
+    s = double + tau
+    e = tau - (s - double)
+    return ((4.0 - s) - e) / 3.0
+
+
+def _onset_radius(excess):
+    """delta = 1 - b from (2/pi) delta + delta^2/8 = T* - 1 (stable root)."""
+    return 2.0 * excess / (_TWO_OVER_PI + np.sqrt(_TWO_OVER_PI**2 + 4.0 * ONSET_SECOND * excess))
+
+
+def _onset_work(excess):
+    """W_mono at small slip annuli (module docstring), e = T* - 1."""
+    return _WORK_ONSET * excess**3 * (1.0 + ONSET_WORK * excess)
+
+
+class MonotonicCurves:
+    """T*(b), 4/3 - T*(b), omega(b), W_mono(b) and b(tau), omega_m(tau), W_mono(tau) (module docstring)."""
+
+    def __init__(self, table: dict):
+        panels = table["panels"]
+        edges = [p["lo"] for p in panels] + [panels[-1]["hi"]]
+        self.table = table
+        self.b_low, self.b_high = table["domain"]
+        self.by_radius = {name: Piecewise(edges, [p[name] for p in panels])
+                          for name in ("torque", "torque_gap", "rigid_rotation", "loading_work")}
+        self.onset_torque = float(self.by_radius["torque"](self.b_high))  # the solver's resolution limit
+        self.trust_torque = 1.0 + _TWO_OVER_PI * ONSET_DELTA + ONSET_SECOND * ONSET_DELTA**2
+        low = self.by_radius
+        self._small = {  # continuation below b_low (module docstring)
+            "gap_ratio": float(low["torque_gap"](self.b_low)) / self.b_low**3,
+            "rotation": float(low["rigid_rotation"](self.b_low)),
+            "work": float(low["loading_work"](self.b_low)),
+            "work_slope": -self.b_low * _first_panel_slope(low["loading_work"]),
+        }
+        by_torque = table.get("by_torque")
+        if by_torque is None:
+            by_torque = _by_torque(self)
+        self.u_curves = {n: Piecewise(by_torque["u_edges"], by_torque["u_panels"][n]) for n in _CURVES_BY_TORQUE}
+        self.t_curves = {n: Piecewise(by_torque["t_edges"], by_torque["t_panels"][n]) for n in _CURVES_BY_TORQUE}
+        self.u_split = by_torque["u_edges"][-1]
+        self.t_split = by_torque["t_edges"][-1]
+
+    # ------------------------------------------------------------------ by stick radius
+    def _by_radius(self, name: str, b, onset, small, limits):
+        b = np.asarray(b, dtype=float)
+        out = np.asarray(self.by_radius[name](b), dtype=float)
+        out = np.where(b >= 1.0, limits[1], out)
+        out = np.where(b <= 0.0, limits[0], out)
+        near = (b > 1.0 - ONSET_DELTA) & (b < 1.0)
+        if near.any():
+            out = np.where(near, onset(1.0 - np.where(near, b, 0.0)), out)
+        tiny = (b > 0.0) & (b < self.b_low)
+        if tiny.any():
+            out = np.where(tiny, small(np.where(tiny, b, self.b_low)), out)
+        return out if out.ndim else float(out)
+
+    def torque(self, b):
+        """T*(b) for 0 <= b <= 1 (4/3 at b = 0, 1 at b = 1)."""
+        return self._by_radius(
+            "torque", b, lambda d: 1.0 + _TWO_OVER_PI * d + ONSET_SECOND * d * d,
+            lambda x: GROSS_SLIP_TORQUE - self._small["gap_ratio"] * x**3, (GROSS_SLIP_TORQUE, 1.0))
+
+    def torque_gap(self, b):
+        """4/3 - T*(b), with relative accuracy for small stick discs."""
+        return self._by_radius(
+            "torque_gap", b, lambda d: 1.0 / 3.0 - _TWO_OVER_PI * d - ONSET_SECOND * d * d,
+            lambda x: self._small["gap_ratio"] * x**3, (0.0, 1.0 / 3.0))
+
+    def rotation_at_radius(self, b):
+        """omega(b) (f p0 / mu); +inf at b = 0."""
+        return self._by_radius(
+            "rigid_rotation", b, lambda d: _OMEGA_ONSET * (_TWO_OVER_PI * d + ONSET_SECOND * d * d) ** 3,
+            lambda x: self._small["rotation"] + 0.5 * np.log(self.b_low / x), (math.inf, 0.0))
+
+    def work_at_radius(self, b):
+        """W_mono(b) ((f p0)^2 a^3 / mu); +inf at b = 0."""
+        s = self._small
+        return self._by_radius(
+            "loading_work", b, lambda d: _onset_work(_TWO_OVER_PI * d + ONSET_SECOND * d * d),
+            lambda x: s["work"] + s["work_slope"] * np.log(self.b_low / x), (math.inf, 0.0))
+
+    # ------------------------------------------------------------------ by torque
+    def _by_torque(self, name: str, tau):
+        tau = np.asarray(tau, dtype=float)
+        stick, spin = {"stick_radius": (1.0, 0.0), "rigid_rotation": (0.0, math.inf),
+                       "loading_work": (0.0, math.inf)}[name]
+        out = np.full(tau.shape, np.nan)
+        gap = torque_gap_of(tau)
+        out[tau <= 1.0] = stick
+        spinning = gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE
+        out[spinning] = spin
+        onset = (tau > 1.0) & (tau < self.trust_torque)
+        if onset.any():
+            excess = tau[onset] - 1.0
+            out[onset] = {"stick_radius": 1.0 - _onset_radius(excess), "rigid_rotation": _OMEGA_ONSET * excess**3,
+                          "loading_work": _onset_work(excess)}[name]
+        middle = (tau >= self.trust_torque) & (tau <= self.t_split)
+        if middle.any():
+            out[middle] = self.t_curves[name](tau[middle])
+        high = (tau > self.t_split) & ~spinning
+        if high.any():
+            out[high] = self.u_curves[name](np.cbrt(gap[high]))
+        return out if out.ndim else float(out)
+
+    def stick_radius(self, tau):
+        """b(tau) for 0 <= tau <= 4/3 (1 in stick, 0 at spinning)."""
+        return self._by_torque("stick_radius", tau)
+
+    def rotation(self, tau):
+        """omega_m(tau) of a monotonic loading to tau (0 in stick, +inf at spinning)."""
+        return self._by_torque("rigid_rotation", tau)
+
+    def work(self, tau):
+        """W_mono(tau): work against friction of a monotonic loading to tau (``curves.work``)."""
+        return self._by_torque("loading_work", tau)
+
+    def state(self, tau: float) -> tuple[float, float, float]:
+        """(b, omega_m, W_mono) at one torque 0 <= tau <= 4/3, without numpy overhead."""
+        if tau <= 1.0:
+            return 1.0, 0.0, 0.0
+        gap = float(torque_gap_of(tau)) if tau > self.t_split else 0.0
+        if tau > self.t_split:
+            if gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE:
+                return 0.0, math.inf, math.inf
+            u = gap ** (1.0 / 3.0)
+            c = self.u_curves
+            return c["stick_radius"].scalar(u), c["rigid_rotation"].scalar(u), c["loading_work"].scalar(u)
+        if tau < self.trust_torque:
+            excess = tau - 1.0
+            return 1.0 - float(_onset_radius(excess)), _OMEGA_ONSET * excess**3, float(_onset_work(excess))
+        c = self.t_curves
+        return c["stick_radius"].scalar(tau), c["rigid_rotation"].scalar(tau), c["loading_work"].scalar(tau)
+
+    def dissipation(self, torque_range):
+        """W(A) = 4 W_mono(A/2): energy dissipated per closed loop of range A (0 for A <= 2)."""
+        return 4.0 * np.asarray(self.work(0.5 * np.asarray(torque_range, dtype=float)))
+
+    def rotation_integral(self, tau):
+        """int_1^tau omega_m(t) dt = int_b^1 omega(c) |dT*/dc| dc (Gauss-Legendre per panel of the b table).
+
+        Used for the torque-twist route of the loop energy: pi times the area of a loop of
+        range A is pi [2 A omega_m(A/2) - 8 int_1^(A/2) omega_m dt] (``histories.energy``).
+        """
+        taus = np.atleast_1d(np.asarray(tau, dtype=float))
+        x, w = np.polynomial.legendre.leggauss(48)
+        torque, rotation = self.by_radius["torque"], self.by_radius["rigid_rotation"]
+        slope = torque.derivative
+        out = np.empty(taus.shape)
+        for i, t in enumerate(taus):
+            b = float(self.stick_radius(t))
+            if b >= 1.0:
+                out[i] = 0.0
+                continue
+            edges = [b, *[e for e in torque.edges if b < e < self.b_high], self.b_high]
+            total = 0.0
+            for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+                c = 0.5 * (hi - lo) * (x + 1.0) + lo
+                total += 0.5 * (hi - lo) * float(np.sum(w * rotation(c) * -slope(c)))
+            # the onset stretch b_high < c < 1: omega = (pi^3/12) e^3 with e = T* - 1
+            total += _OMEGA_ONSET * (float(self.torque(self.b_high)) - 1.0) ** 4 / 4.0
+            out[i] = total
+        return out if np.ndim(tau) else float(out[0])
+
+
+def _first_panel_slope(curve: Piecewise) -> float:
+    """d/dv of ``curve`` at its lower edge (first panel only)."""
+    c = curve.coefficients[0]
+    k = np.arange(c.size)
+    return float(np.sum(c * (-1.0) ** (k + 1) * k**2)) * 2.0 / (curve.edges[1] - curve.edges[0])
+
+
+def _fit(values: np.ndarray, tolerance: float) -> list[float]:
+    coefficients = lobatto_coefficients(values)
+    bound = tolerance * max(1e-300, float(np.max(np.abs(values))))
+    keep = np.nonzero(np.abs(coefficients) > bound)[0]
+    return coefficients[: int(keep[-1]) + 1 if keep.size else 1].tolist()
+
+
+def _by_torque(curves: MonotonicCurves) -> dict:
+    """Panels by torque (module docstring): images of the radius panels, values through b(tau)."""
+    radius_edges = curves.by_radius["torque"].edges
+    split = int(np.argmin(np.abs(radius_edges - U_SPLIT_RADIUS)))
+    u_edges = np.cbrt(curves.torque_gap(radius_edges[: split + 1]))
+    t_edges = np.sort(curves.torque(radius_edges[split:]))
+    x = np.cos(np.pi * np.arange(_BY_TORQUE_POINTS) / (_BY_TORQUE_POINTS - 1))
+    out = {"u_edges": u_edges.tolist(), "t_edges": t_edges.tolist(), "u_panels": {}, "t_panels": {}}
+    for key, edges, curve, target in (
+        ("u_panels", u_edges, curves.by_radius["torque_gap"], lambda v: v**3),
+        ("t_panels", t_edges, curves.by_radius["torque"], lambda v: v),
+    ):
+        lists = {name: [] for name in _CURVES_BY_TORQUE}
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+            v = 0.5 * (hi - lo) * x + 0.5 * (hi + lo)
+            v[0], v[-1] = hi, lo
+            b = curve.solve(target(v))
+            lists["stick_radius"].append(_fit(b, 1e-16))
+            lists["rigid_rotation"].append(_fit(curves.rotation_at_radius(b), 1e-16))
+            lists["loading_work"].append(_fit(curves.work_at_radius(b), 1e-15))
+        out[key] = lists
+    return out
+
+
+def add_by_torque(table: dict) -> dict:
+    """The table with its by-torque panels (computed from the radius panels, no solves)."""
+    table = {k: v for k, v in table.items() if k != "by_torque"}
+    table["by_torque"] = _by_torque(MonotonicCurves({**table, "by_torque": {
+        "u_edges": [0.0, 1.0], "t_edges": [0.0, 1.0],
+        "u_panels": {n: [[0.0]] for n in _CURVES_BY_TORQUE}, "t_panels": {n: [[0.0]] for n in _CURVES_BY_TORQUE}}}))
+    return table
+
+
+@functools.lru_cache(maxsize=1)
+def monotonic_curves() -> MonotonicCurves:
+    """The curves of the shipped table (``curves.table.TABLE_PATH``), loaded once per process."""
+    return MonotonicCurves(read_table(TABLE_PATH))

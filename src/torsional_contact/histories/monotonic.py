@@ -1,0 +1,118 @@
+r"""The monotonic solution mono(tau) as the memory rules use it: numbers cheap, fields on demand.
+
+Units: T* = 2T/(f F a); b in a; omega in f p0 / mu; W_mono in (f p0)^2 a^3 / mu.
+
+The memory rules (``histories.memory``) write every state as sum_j w_j mono(tau_j).  The
+torque, stick radius, rigid rotation and dissipated energy of a state need only three
+numbers per tau: b(tau), omega_m(tau) and the work against friction of the monotonic
+loading W_mono(tau) = 2 pi int_b^1 s_m(r; tau) r dr (``curves.work``).  The profiles
+(traction, slip, stresses) need the full solution, built only when asked for.
+
+* ``fast`` (default): the numbers from the interpolants of ``curves`` (exact to ~1e-14,
+  microseconds), the solutions from ``solve(torque=tau)`` (a few ms, cached).
+* ``complete`` / ``published``: the truncated weak form at ``n_terms``; the numbers come from
+  the solution itself and W_mono from the quadrature of its slip (panels of 20 / lam_N,
+  where the series oscillates), all cached per tau.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from .. import validation
+from ..criteria import GROSS_SLIP_TORQUE
+from ..curves import monotonic_curves
+from ..quadrature import gauss_legendre_panels
+from ..solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve
+
+__all__ = ["DEFAULT_METHOD", "resolve", "monotonic", "register", "point", "points", "series_loading_work"]
+
+_ONSET_ULPS = 8
+
+
+def resolve(method=None, n_terms=None) -> tuple[str, int | None]:
+    """(method, n_terms) with the defaults: ``fast`` (n_terms None) or a weak form (n_terms 145)."""
+    method = validation.choice("method", DEFAULT_METHOD if method is None else method, METHODS)
+    if method == "fast":
+        return method, None if n_terms is None else validation.positive_int("n_terms", n_terms)
+    return method, validation.positive_int("n_terms", DEFAULT_N_TERMS if n_terms is None else n_terms)
+
+
+def _snap(tau: float) -> float:
+    """tau within a few ulps of the slip onset (e.g. (1.23 - (1.23 - 2)) / 2) is the onset itself."""
+    return 1.0 if abs(tau - 1.0) <= _ONSET_ULPS * np.finfo(float).eps else min(tau, GROSS_SLIP_TORQUE)
+
+
+_CACHE_SIZE = 4096
+_SOLUTIONS: dict = {}
+
+
+def _solution(tau: float, method: str, n_terms: int | None) -> Solution:
+    key = (tau, method, n_terms)
+    if key not in _SOLUTIONS:
+        if len(_SOLUTIONS) >= _CACHE_SIZE:
+            _SOLUTIONS.clear()
+        _SOLUTIONS[key] = solve(torque=tau, method=method, n_terms=n_terms)
+    return _SOLUTIONS[key]
+
+
+def register(solution: Solution, tau: float | None = None) -> float:
+    """Remember a solution found by its stick radius as mono(tau) (no inversion later); returns tau.
+
+    ``tau`` defaults to the solution's T*; give it when the history will ask for a torque
+    that differs from T* by rounding (e.g. (T_1 - (T_1 - 2 T*)) / 2).
+    """
+    method, n_terms = resolve(solution.method, solution.n_terms)
+    tau = solution.torque if tau is None else float(tau)
+    if len(_SOLUTIONS) >= _CACHE_SIZE:
+        _SOLUTIONS.clear()
+    _SOLUTIONS[(tau, method, n_terms)] = solution
+    return tau
+
+
+def monotonic(tau, *, method=None, n_terms=None) -> Solution:
+    """mono(tau): the monotonic solution at torque 0 <= tau <= 4/3, friction limit 1 (cached)."""
+    tau = validation.torque("tau", tau)
+    if tau < 0:
+        raise ValueError(f"tau must lie in [0, 4/3], got {tau!r}")
+    method, n_terms = resolve(method, n_terms)
+    return _solution(_snap(tau), method, n_terms)
+
+
+def series_loading_work(solution: Solution) -> float:
+    """W_mono = 2 pi int_b^1 s(r) r dr of a weak-form solution (quadrature, panels of 20 / lam_N)."""
+    if solution.regime == "stick":
+        return 0.0
+    if solution.regime == "gross-slip":
+        return math.inf
+    width = 20.0 / solution.backend.solution.eigenvalues[-1]
+    nodes, weights = gauss_legendre_panels(solution.stick_radius, 1.0, width, ())
+    return float(2.0 * math.pi * np.sum(np.abs(solution.slip(nodes)) * nodes * weights))
+
+
+@functools.lru_cache(maxsize=4096)
+def _series_point(tau: float, method: str, n_terms: int) -> tuple[float, float, float]:
+    solution = _solution(tau, method, n_terms)
+    return solution.stick_radius, solution.rigid_rotation, series_loading_work(solution)
+
+
+def point(tau: float, method: str, n_terms: int | None) -> tuple[float, float, float]:
+    """(b, omega_m, W_mono) at 0 <= tau <= 4/3 for a resolved (method, n_terms)."""
+    tau = _snap(tau)
+    if method == "fast":
+        return monotonic_curves().state(tau)
+    return _series_point(tau, method, n_terms)
+
+
+def points(tau, method: str, n_terms: int | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Vectorised ``point``: arrays b, omega_m, W_mono for an array of tau."""
+    tau = np.asarray(tau, dtype=float)
+    tau = np.where(np.abs(tau - 1.0) <= _ONSET_ULPS * np.finfo(float).eps, 1.0, np.minimum(tau, GROSS_SLIP_TORQUE))
+    if method == "fast":
+        curves = monotonic_curves()
+        return curves.stick_radius(tau), curves.rotation(tau), curves.work(tau)
+    rows = np.array([_series_point(float(t), method, n_terms) for t in tau.ravel()]).reshape(*tau.shape, 3)
+    return rows[..., 0], rows[..., 1], rows[..., 2]
