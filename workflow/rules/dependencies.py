@@ -85,4 +85,7 @@ def library_files(script):
         parts = name.split(".")
         todo.extend(".".join(parts[:k]) for k in range(1, len(parts)))
         todo.extend(_imports(_module_file(name)) - seen)
-    return sorted(str(_module_file(name)) for name in seen)
+    files = {_module_file(name) for name in seen}
+    # data shipped inside a package the script uses (e.g. the tabulated monotonic curves)
+    files |= {data for f in list(files) if f.name == "__init__.py" for data in f.parent.glob("*.json")}
+    return sorted(str(f) for f in files)

@@ -134,3 +134,46 @@ rule benchmark_scenes:
         "python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
         " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
+rule benchmark_histories:
+    input:
+        script="workflow/scripts/benchmark_histories.py",
+        lib=lib("workflow/scripts/benchmark_histories.py"),
+        cli=lib("src/torsional_contact/__main__.py"),  # the script times the command line in subprocesses
+    output:
+        json=f"{OUT}/data/benchmark_histories.json",
+        macros=f"{OUT}/macros/benchmark_histories.tex",
+    params:
+        samples=config["benchmark_histories"]["samples"],
+        cycles=config["benchmark_histories"]["cycles"],
+        points=config["benchmark_histories"]["turning_points"],
+        repeats=config["benchmark_histories"]["repeats"],
+    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    log:
+        logfile("benchmark_histories"),
+    resources:
+        runtime=20,
+        mem_mb=3000,
+    shell:
+        "python {input.script} --samples {params.samples} --cycles {params.cycles} --turning-points {params.points}"
+        " --repeats {params.repeats} --json {output.json} --macros {output.macros} > {log} 2>&1"
+
+
+rule curve_accuracy:
+    input:
+        script="workflow/scripts/curve_accuracy.py",
+        lib=lib("workflow/scripts/curve_accuracy.py"),
+    output:
+        json=f"{OUT}/verification/curve_accuracy.json",
+        macros=f"{OUT}/macros/curve_accuracy.tex",
+    params:
+        per_panel=config["curve_accuracy"]["per_panel"],
+    log:
+        logfile("curve_accuracy"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --per-panel {params.per_panel} --json {output.json} --macros {output.macros}"
+        " > {log} 2>&1"

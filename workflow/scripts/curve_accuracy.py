@@ -113,8 +113,9 @@ def main():
     }
     write_json(a.json, {"summary": summary, "by_radius": radius_rows, "by_torque": torque_rows,
                         "loop_energy": routes, "table": {k: v for k, v in curves.table.items()
-                                                         if k in ("domain", "solves", "seconds", "method")}},
-               seed=a.seed, seconds=round(time.perf_counter() - start, 1))
+                                                         if k in ("domain", "solves", "method")}},
+               seed=a.seed)
+    print(f"curve accuracy in {time.perf_counter() - start:.1f} s")
     if a.macros:
         write_macros(a.macros, {f"curves-{k.replace('_', '-')}": f"{v:.0e}" if isinstance(v, float) else v
                                 for k, v in summary.items()}, "workflow/scripts/curve_accuracy.py")
