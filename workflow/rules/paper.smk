@@ -44,7 +44,7 @@ rule paper:
         PAPER_PDF,
     params:
         build=f"{OUT}/paper/build",
-        outdir=OUT,
+        results=os.path.relpath(OUT, "paper"),  # \resultsdir as seen from paper/ (latexmk -cd)
     log:
         logfile("paper"),
     resources:
@@ -53,7 +53,7 @@ rule paper:
     shell:
         # -cd: run in paper/ so references.bib is found; \resultsdir is relative to paper/
         "mkdir -p {params.build} && latexmk -cd -pdf -interaction=nonstopmode -halt-on-error"
-        " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{../{params.outdir}}}'"
+        " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{{params.results}}}'"
         " {input.tex} > {log} 2>&1"
         " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
 

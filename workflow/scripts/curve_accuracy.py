@@ -68,8 +68,10 @@ def by_torque(curves, per_panel, rng):
             continue
         b = root(curves, tau)
         s = direct(b)
+        slope = abs(float(curves.by_radius["torque"].derivative(b)))
         rows.append({"torque": tau, "b": b, "stick_radius": abs(curves.stick_radius(tau) - b),
-                     "conditioning": float(np.spacing(tau) / abs(curves.by_radius["torque"].derivative(b))),
+                     # rounding of tau moves b by this much (None where dT*/db vanishes to rounding, b -> 0)
+                     "conditioning": float(np.spacing(tau)) / slope if slope > 0 else None,
                      "rigid_rotation": abs(curves.rotation(tau) - s.rigid_rotation),
                      "loading_work_rel": abs(curves.work(tau) / loading_work(s) - 1)})
     return rows
