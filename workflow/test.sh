@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # The README's test command: set up .venv (and TeX), lint, run the whole test suite
-# (slow marker included) and the end-to-end workflow on the small test configuration.
+# (slow tier included: the end-to-end workflow on the small test configuration).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 bash workflow/setup_env.sh
 bash workflow/ensure_tex.sh
 export PATH="$root/.venv/bin:$PATH"
-ruff check src tests workflow
-python -m pytest -p no:cacheprovider -q "$@"
+ruff check src tests workflow notebooks
+# every tier (the slow one too: end-to-end builds), on two workers; the workflow tests share one
+# worker (xdist group) because their builds share results/ci and Snakemake's lock
+start=$(date +%s)
+python -m pytest -p no:cacheprovider -q -n 2 --dist loadgroup -m "slow or not slow" "$@"
+echo "test: suite finished in $(( $(date +%s) - start )) s" >&2

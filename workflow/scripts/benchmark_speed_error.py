@@ -21,6 +21,7 @@ from torsional_contact.io.timing import format_ratio, format_seconds, interleave
 from torsional_contact.provenance import latex_escape, write_json, write_macros
 from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
 from torsional_contact.solvers.weak_form import solve_series
+from torsional_contact.typeset import sci
 from torsional_contact.verification import reference
 
 BASELINE = ("complete", 145)
@@ -167,11 +168,11 @@ def main():
         write_macros(a.macros, {
             "bench-b": f"{mid['stick_radius']:g}",
             "bench-complete145-time": _latex_seconds(base["seconds"]),
-            "bench-complete145-error": f"{base['torque_error']:.1e}",
-            "bench-complete145-traction-error": f"{base['traction_error']:.1e}",
+            "bench-complete145-error": sci(base["torque_error"]),
+            "bench-complete145-traction-error": sci(base["traction_error"]),
             "bench-fast-time": _latex_seconds(fast_default["seconds"]),
             "bench-fast-nodes": fast_default["resolution"],
-            "bench-fast-error": f"{max(fast_default['torque_error'], 1e-16):.0e}",
+            "bench-fast-error": sci(max(fast_default["torque_error"], 1e-16), 0),
             "bench-fast-ratio": format_ratio(fast_default["time_ratio_vs_complete145"]["median"]),
             "bench-fast-ratio-low": format_ratio(fast_default["time_ratio_vs_complete145"]["q25"]),
             "bench-fast-ratio-high": format_ratio(fast_default["time_ratio_vs_complete145"]["q75"]),
@@ -179,7 +180,7 @@ def main():
             "bench-curve-ratio": format_ratio(curve["ratio"]["median"]),
             "bench-curve-time": _latex_seconds(curve["fast"]["median"]),
             "bench-inverse-time": _latex_seconds(goals["inverse"]["median"]),
-            "bench-inverse-error": f"{goals['inverse']['max_torque_error']:.0e}",
+            "bench-inverse-error": sci(max(goals["inverse"]["max_torque_error"], 1e-16), 0),
             "bench-cpu": latex_escape(f"{host['cpu']}, {host['cores']} cores"),
             "bench-load": f"{host['load_average'][0]:.1f}" if host["load_average"] else "unknown",
         }, "workflow/scripts/benchmark_speed_error.py")

@@ -8,6 +8,7 @@ import argparse
 import numpy as np
 
 from torsional_contact.provenance import write_json, write_macros
+from torsional_contact.typeset import sci
 from torsional_contact.verification.convergence import format_table, n_terms_study
 
 
@@ -36,7 +37,7 @@ def main():
             "conv-torque-nmax": f"{study['torque'][-1]:.6f}",
             "conv-order-torque": f"{np.nanmean(study['order_torque']):.2f}",
             "conv-order-omega": f"{np.nanmean(study['order_rigid_rotation']):.2f}",
-            "conv-change-145-nmax": f"{abs(study['torque'][-1] - study['torque'][0]):.1e}",
+            "conv-change-145-nmax": sci(abs(study["torque"][-1] - study["torque"][0])),
         }, "workflow/scripts/convergence_table.py")
 
 

@@ -24,6 +24,7 @@ from torsional_contact.curves.table import torque_gap
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle
 from torsional_contact.provenance import write_json, write_macros
 from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.typeset import sci
 
 
 def direct(b):
@@ -119,7 +120,7 @@ def main():
                seed=a.seed)
     print(f"curve accuracy in {time.perf_counter() - start:.1f} s")
     if a.macros:
-        write_macros(a.macros, {f"curves-{k.replace('_', '-')}": f"{v:.0e}" if isinstance(v, float) else v
+        write_macros(a.macros, {f"curves-{k.replace('_', '-')}": sci(v, 0) if isinstance(v, float) else v
                                 for k, v in summary.items()}, "workflow/scripts/curve_accuracy.py")
     print(summary)
 

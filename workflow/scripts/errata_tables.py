@@ -189,8 +189,8 @@ def main():
         "cond-n-max": n_max,
         "cond-published-paper": f"{cond(n_paper, 'published'):.0f}",
         "cond-complete-paper": f"{cond(n_paper, 'complete'):.0f}",
-        "cond-published-max": f"{cond(n_max, 'published'):.2e}",
-        "cond-complete-max": f"{cond(n_max, 'complete'):.2e}",
+        "cond-published-max": sci(cond(n_max, "published"), 2),
+        "cond-complete-max": sci(cond(n_max, "complete"), 2),
         "cond-ratio-paper": f"{cond(n_paper, 'complete') / cond(n_paper, 'published'):.3f}",
         "cond-ratio-max": f"{cond(n_max, 'complete') / cond(n_max, 'published'):.4f}",
     }

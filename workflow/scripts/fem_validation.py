@@ -27,6 +27,7 @@ import numpy as np
 
 from torsional_contact import solve
 from torsional_contact.provenance import write_json, write_macros, write_text
+from torsional_contact.typeset import sci
 from torsional_contact.verification.collocation import solve_direct
 from torsional_contact.verification.finite_element import ELEMENTS, solve_finite_element
 
@@ -161,10 +162,7 @@ def _sci(x):
     """A signed difference for the table: 1.2e-13 as $1.2\\times10^{-13}$; None as a dash."""
     if x is None:
         return "---"
-    if x == 0:
-        return "$0$"
-    mantissa, exponent = f"{x:.0e}".split("e")
-    return rf"${mantissa}\times10^{{{int(exponent)}}}$"
+    return f"${sci(x, 0, always=True)}$"
 
 
 def _fixed(x):
@@ -221,18 +219,18 @@ def macros(records, levels, degree):
         "fem-degree": degree,
         "fem-levels": ", ".join(map(str, levels)),
         "fem-dofs-max": max(r["levels"][-1]["n_dofs"] for r in records),
-        "fem-error-torque": f"{worst('torque'):.0e}",
-        "fem-error-omega": f"{worst('rigid_rotation'):.0e}",
-        "fem-error-displacement": f"{worst('u_theta'):.0e}",
-        "fem-error-stress": f"{worst('stress'):.0e}",
-        "fem-estimate-torque": f"{worst('torque', 'estimate'):.0e}",
-        "fem-torque-balance": f"{max(abs(r['comparison']['torque_balance']['fem']) for r in records):.0e}",
+        "fem-error-torque": sci(worst("torque"), 0),
+        "fem-error-omega": sci(worst("rigid_rotation"), 0),
+        "fem-error-displacement": sci(worst("u_theta"), 0),
+        "fem-error-stress": sci(worst("stress"), 0),
+        "fem-estimate-torque": sci(worst("torque", "estimate"), 0),
+        "fem-torque-balance": sci(max(abs(r["comparison"]["torque_balance"]["fem"]) for r in records), 0),
         "fem-order-min": f"{min(orders):.1f}" if orders else "---",
         "fem-order-max": f"{max(orders):.1f}" if orders else "---",
     }
     if all("direct" in r for r in records):
-        values["fem-direct-difference-torque"] = f"{worst('torque', 'direct_minus_abel_fredholm'):.0e}"
-        values["fem-direct-difference-omega"] = f"{worst('rigid_rotation', 'direct_minus_abel_fredholm'):.0e}"
+        values["fem-direct-difference-torque"] = sci(worst("torque", "direct_minus_abel_fredholm"), 0)
+        values["fem-direct-difference-omega"] = sci(worst("rigid_rotation", "direct_minus_abel_fredholm"), 0)
     for r in records:
         b = f"{r['stick_radius']:g}"
         values[f"fem-torque-b{b}"] = f"{r['comparison']['torque']['fem']:.12f}"

@@ -7,7 +7,18 @@ import numpy as np
 
 from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
 
-FLOOR = 1e-16
+FLOOR = 1e-16  # errors at or below it (rounding level, exact zeros included) are drawn here, open markers
+
+
+def floored(ax, x, err, marker, color, label=None):
+    """Plot errors; those at the rounding level at FLOOR with open markers (never silently clipped)."""
+    err = np.asarray(err, dtype=float)
+    shown = np.maximum(err, FLOOR)
+    line = ax.plot(x, shown, marker, color=color, label=label)[0]
+    low = err <= FLOOR
+    if low.any():
+        ax.plot(np.asarray(x)[low], shown[low], marker[0], color=color, mfc="white", ms=7, zorder=5)
+    return line
 
 
 def main():
@@ -22,22 +33,26 @@ def main():
         for method, marker in (("complete", "o-"), ("published", "s:")):
             rows = [r for r in result["rows"] if r["method"] == method]
             n = np.array([r["resolution"] for r in rows], dtype=float)
-            err = np.array([max(r["torque_error"], FLOOR) for r in rows])
+            err = np.array([r["torque_error"] for r in rows])
             label = f"{method}, $b/a={b:g}$"
             if method == "complete" and n.size >= 2:
-                order = -np.polyfit(np.log(n), np.log(err), 1)[0]
+                order = -np.polyfit(np.log(n), np.log(np.maximum(err, FLOOR)), 1)[0]
                 label += f" (order {order:.2f})"
-            left.loglog(n, err, marker, color=color, label=label)
+            floored(left, n, err, marker, color, label)
         rows = [r for r in result["rows"] if r["method"] == "fast"]
-        right.semilogy([r["resolution"] for r in rows], [max(r["torque_error"], FLOOR) for r in rows], "D-",
-                       color=color, label=f"$b/a = {b:g}$")
+        floored(right, [r["resolution"] for r in rows], [r["torque_error"] for r in rows], "D-", color,
+                f"$b/a = {b:g}$")
+    left.set_xscale("log")
+    left.set_yscale("log")
+    right.set_yscale("log")
+    right.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
     sizes = sorted({r["resolution"] for r in results[0]["rows"] if r["method"] == "complete"})
     left.set_xticks(sizes, [str(n) for n in sizes])
     left.minorticks_off()
     left.set_xlabel("number of terms N")
     left.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
     left.legend(fontsize=6)
-    right.set_xlabel("Nystrom nodes")
+    right.set_xlabel("Abel-Fredholm: Nystr\u00f6m nodes")
     right.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
     right.legend(fontsize=7, title="Abel-Fredholm")
     fig.tight_layout()

@@ -5,9 +5,9 @@ interface traction (units f p0), for each method; reads the benchmark JSON."""
 from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
 
 STYLE = {"published": ("s:", "published eq. (38), N sweep"), "complete": ("o-", "complete, N sweep"),
-         "fast": ("D-", "Abel-Fredholm (fast), node sweep"),
+         "fast": ("D-", "Abel-Fredholm, node sweep"),
          "reference": ("^--", "mpmath/flint, N = 145, digits sweep")}
-FLOOR = 1e-16  # errors at rounding level are drawn at this floor
+FLOOR = 1e-16  # errors at the rounding level (exact zeros included) are drawn here, with open markers
 
 
 def main():
@@ -23,7 +23,10 @@ def main():
         if not rows:
             continue
         ms = [1e3 * r["seconds"] for r in rows]
-        left.loglog([max(r["torque_error"], FLOOR) for r in rows], ms, marker, label=label)
+        line = left.loglog([max(r["torque_error"], FLOOR) for r in rows], ms, marker, label=label)[0]
+        low = [(FLOOR, t) for r, t in zip(rows, ms, strict=True) if r["torque_error"] <= FLOOR]
+        if low:
+            left.plot(*zip(*low, strict=True), marker[0], color=line.get_color(), mfc="white", ms=7, zorder=5)
         with_traction = [r for r in rows if r["traction_error"] is not None]
         if with_traction:
             right.loglog([max(r["traction_error"], FLOOR) for r in with_traction],
@@ -32,6 +35,7 @@ def main():
         ax.set_xlabel(what)
         ax.set_ylabel("wall time per stick radius [ms]")
         ax.invert_xaxis()
+    left.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
     left.legend(fontsize=7, title=f"$b/a = {mid['stick_radius']:g}$", loc="center right")
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)

@@ -17,6 +17,7 @@ import numpy as np
 from torsional_contact import ResolutionWarning
 from torsional_contact import histories as H
 from torsional_contact.provenance import write_json, write_macros
+from torsional_contact.typeset import sci
 
 
 def fig5(t_max, stages, method, n_terms):
@@ -147,8 +148,8 @@ def main():
             "hist-fit-exponent": f"{law['fitted_exponent']:.3f}",
             "hist-fit-prefactor": f"{law['fitted_prefactor']:.1f}",
             "hist-predicted-prefactor": f"{law['predicted_prefactor']:.1f}",
-            "hist-loop-energy-agreement": f"{max(loop_err, 1e-16):.0e}",
-            "hist-cycle-energy-agreement": f"{max(energy_err, 1e-16):.0e}",
+            "hist-loop-energy-agreement": sci(max(loop_err, 1e-16), 0),
+            "hist-cycle-energy-agreement": sci(max(energy_err, 1e-16), 0),
             "hist-method": "Abel--Fredholm" if fast else f"{a.method} weak form",
             "hist-n-terms": a.n_terms,
         }, "workflow/scripts/history_data.py")

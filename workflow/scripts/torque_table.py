@@ -6,10 +6,11 @@ Writes a CSV with metadata, a LaTeX table and macros for the manuscript.
 import argparse
 import warnings
 
+import numpy as np
 from scipy import optimize
 
 from torsional_contact import solve
-from torsional_contact.diagnostics import TorsionalContactWarning, UnphysicalResultWarning
+from torsional_contact.diagnostics import TorsionalContactWarning, TruncationWarning, UnphysicalResultWarning
 from torsional_contact.provenance import provenance, write_macros, write_text
 from torsional_contact.solvers.weak_form import solve_series
 
@@ -24,6 +25,20 @@ def published_spinning_crossing(n_terms):
     return optimize.brentq(excess, 0.1, 0.9, xtol=1e-10)
 
 
+def shear_bound(solution):
+    """max over the near field of |(sigma_zt, sigma_rt)| / T*: at most 1 if slip never raises the shear
+    above the bilateral (monolithic-shaft) maximum T* r at r = a (eq. 2), the basis of eq. (6) for the
+    split shaft.  Grid: 201 radii x (z = 0, 1e-4, 1e-3 and 120 levels up to 1.5 a)."""
+    r = np.linspace(0.0, 1.0, 201)[:, None]
+    z = np.concatenate([[0.0, 1e-4, 1e-3], np.linspace(0.005, 1.5, 120)])[None, :]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", TruncationWarning)  # z = 1e-4: the bound below is what is measured
+        sigma_zt, sigma_rt = solution.stress(r, z)
+    resultant = np.hypot(sigma_zt, sigma_rt) / solution.torque
+    worst = np.unravel_index(int(np.argmax(resultant)), resultant.shape)
+    return float(resultant.max()), float(r[worst[0], 0]), float(z[0, worst[1]])
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--stick-radii", type=float, nargs="+", required=True)
@@ -33,7 +48,7 @@ def main():
     p.add_argument("--macros")
     a = p.parse_args()
 
-    rows = []
+    rows, bounds = [], []
     for b in a.stick_radii:
         complete = solve(stick_radius=b, method="complete", n_terms=a.n_terms)
         fine = solve(stick_radius=b, method="fast")
@@ -41,6 +56,7 @@ def main():
             warnings.simplefilter("ignore", UnphysicalResultWarning)  # published T* > 4/3 is reported, not hidden
             published = solve(stick_radius=b, method="published", n_terms=a.n_terms)
         rows.append((b, complete.torque, fine.torque, complete.rigid_rotation, fine.rigid_rotation, published.torque))
+        bounds.append((b, *shear_bound(solve(stick_radius=b, tolerance=1e-10))))
 
     header = ("stick_radius,torque_complete,torque_fast,rigid_rotation_complete,"
               "rigid_rotation_fast,torque_published")
@@ -77,6 +93,10 @@ def main():
             values[f"torque-published-b{b:g}"] = f"{tp:.4f}"
             values[f"omega-complete-b{b:g}"] = f"{wc:.4f}"
         values["published-over-spinning-below"] = f"{published_spinning_crossing(a.n_terms):.3f}"
+        worst = max(bounds, key=lambda row: row[1])
+        values["shear-bound-max"] = f"{worst[1]:.10f}"
+        values["shear-bound-radii"] = f"{len(bounds)}"
+        print("max |shear| / T* over the near field:", worst)
         write_macros(a.macros, values, "workflow/scripts/torque_table.py")
 
 
