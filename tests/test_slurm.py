@@ -153,6 +153,7 @@ def _slurm_can_start():
 
 @pytest.mark.cluster
 @pytest.mark.slow
+@pytest.mark.xdist_group("workflow")  # after, not beside, the other builds in this checkout
 @pytest.mark.skipif(_slurm_can_start() is not None, reason=str(_slurm_can_start()))
 def test_single_node_slurm_run_matches_the_local_build():
     env = dict(os.environ, VENV=sys.prefix, CHECK_DIR="results/slurm-check")

@@ -98,6 +98,28 @@ def test_end_to_end_builds_every_deliverable(built):
         assert (built / "logs" / f"{name}.log").exists()
 
 
+def test_manuscript_cites_every_reference_and_resolves_every_label(built):
+    build = built / "paper" / "build"
+    log = (build / "ms.log").read_text(errors="replace")
+    assert not re.search(r"(Reference|Citation) `[^']*' .*undefined", log), "undefined reference or citation"
+    assert "There were undefined" not in log and "undefined result" not in log
+    cited = set()
+    for keys in re.findall(r"\\citation\{([^}]*)\}", (build / "ms.aux").read_text()):
+        cited.update(k.strip() for k in keys.split(","))
+    entries = set(re.findall(r"^@\w+\{([^,]+),", (ROOT / "paper" / "references.bib").read_text(), re.M))
+    assert entries - cited == set(), f"uncited bibliography entries: {sorted(entries - cited)}"
+    assert cited - entries == set(), f"citations without an entry: {sorted(cited - entries)}"
+
+
+def test_numbers_in_the_manuscript_are_typeset_not_programmer_notation(built):
+    offenders = []
+    for macros in (built / "macros").glob("*.tex"):
+        for line in macros.read_text().splitlines():
+            if not line.startswith("%") and re.search(r"\d[eE][+-]?\d", line):
+                offenders.append(f"{macros.name}: {line}")
+    assert not offenders, offenders
+
+
 def test_notebooks_are_executed_with_figures_inline_and_the_report_lists_the_figures(built):
     nbformat = pytest.importorskip("nbformat")
     for notebook in (ROOT / "notebooks").glob("*.py"):
