@@ -17,8 +17,9 @@ import pytest
 from scipy import optimize
 
 from torsional_contact import ResolutionWarning, solve
-from torsional_contact.curves import loading_work, monotonic_curves, torque_gap_of
-from torsional_contact.curves.table import lobatto_coefficients, panel_edges, read_table, torque_gap
+from torsional_contact.criteria import spinning_deficit
+from torsional_contact.curves import loading_work, monotonic_curves
+from torsional_contact.curves.table import lobatto_coefficients, panel_edges, read_table
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle, threshold_asymptotics
 from torsional_contact.quadrature import gauss_legendre_panels
 from torsional_contact.solvers.abel_fredholm import solve_fast
@@ -66,7 +67,8 @@ def test_curves_by_radius_against_direct_solves(seed):
     for b in _radii_off_nodes(1, seed):
         s = _direct(b)
         assert abs(CURVES.torque(b) - s.torque) < (1e-12 if 1 - b > 2e-5 else 5e-12)
-        assert abs(CURVES.torque_gap(b) - torque_gap(s)) < 1e-12 * max(torque_gap(s), 1.0 if 1 - b < 2e-5 else 0.0)
+        bound = 1e-12 * max(s.torque_deficit, 1.0 if 1 - b < 2e-5 else 0.0)
+        assert abs(CURVES.torque_gap(b) - s.torque_deficit) < bound
         assert abs(CURVES.rotation_at_radius(b) - s.rigid_rotation) < 1e-12
         work = loading_work(s)
         tolerance = 1e-10 if 1 - b > 3e-4 else 1e-13 / work
@@ -76,8 +78,8 @@ def test_curves_by_radius_against_direct_solves(seed):
 def _stick_radius_by_root(tau):
     """b(tau) by Brent's method on the solver alone (4/3 - T* near spinning)."""
     if tau > 1.3:
-        gap = float(torque_gap_of(tau))
-        return optimize.brentq(lambda b: torque_gap(_direct(b)) - gap, 1e-6, 0.5, xtol=1e-17, rtol=1e-15)
+        gap = float(spinning_deficit(tau))
+        return optimize.brentq(lambda b: _direct(b).torque_deficit - gap, 1e-6, 0.5, xtol=1e-17, rtol=1e-15)
     return optimize.brentq(lambda b: _direct(b).torque - tau, 0.2, CURVES.b_high, xtol=1e-16, rtol=1e-15)
 
 

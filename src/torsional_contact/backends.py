@@ -12,11 +12,15 @@ displacements in f p0 a / mu; omega in f p0 / mu.  The interface is
   the corrective field u = T* r z + omega r + sum c_n exp(-lambda_n z) J1(lambda_n r)
   (eqs. 22-24) good for every z >= z_min > 0 to ``tolerance``, or ``None`` when there is
   no corrective field (uniform twist);
-* ``metadata()``: resolution parameters for the JSON summary.
+* ``metadata()``: resolution parameters for the JSON summary;
+* ``dini_is_truncation``: True when the Dini series represents a solution known exactly
+  at the interface (its truncation loses accuracy, estimated by ``fields.tail_estimate``),
+  False for the weak forms (the truncated series *is* the solution).
 
-Backends: ``Bilateral`` (stick, and slip annuli below the resolution with the traction capped
-at the friction limit), ``Series`` (the published and complete weak forms), ``AbelFredholm``
-(the default method) and ``Spinning`` (b = 0 by the Abel-Fredholm formulas).
+Backends: ``Bilateral`` (stick), ``Series`` (the published and complete weak forms),
+``AbelFredholm`` (the default method), ``Asymptotic`` (the expansions of ``asymptotics``
+beyond its switches: slip annuli narrower than 1e-6, stick discs smaller than 1e-8) and
+``Spinning`` (b = 0).
 """
 
 from __future__ import annotations
@@ -27,12 +31,13 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import special
 
+from . import asymptotics
 from .fields import dini_terms
 from .solvers.abel_fredholm import FastSolution
 from .solvers.weak_form import SeriesSolution
 from .special.zeros import bessel_j2_zeros
 
-__all__ = ["Bilateral", "Series", "AbelFredholm", "Spinning", "DIFFERENCE_STEP"]
+__all__ = ["Bilateral", "Series", "AbelFredholm", "Asymptotic", "Spinning", "DIFFERENCE_STEP"]
 
 #: Step of the central differences for sigma_rt(r, 0) of the Abel-Fredholm method.
 DIFFERENCE_STEP = 1e-5
@@ -40,16 +45,12 @@ DIFFERENCE_STEP = 1e-5
 
 @dataclass(frozen=True)
 class Bilateral:
-    """Uniform twist u = T* r z + omega r (eqs. 2-4) with the traction capped at the friction limit.
-
-    Exact in stick (T* <= 1, omega = 0).  ``Solution`` also uses it for a slip annulus too
-    narrow to resolve, with omega from the small-slip asymptotes: the traction min(T* r, 1)
-    is then off by at most T* - 1 and the slip (taken as 0) by O((T* - 1)^2).
-    """
+    """Uniform twist u = T* r z (eqs. 2-4): the stick state, T* <= 1, b = 1, omega = 0."""
 
     torque: float
     rigid_rotation: float = 0.0
     stick_radius: float = 1.0
+    dini_is_truncation = False
 
     def traction(self, r):
         return np.minimum(self.torque * r, 1.0)
@@ -72,6 +73,7 @@ class Series:
     """The truncated weak form (published or complete) at N terms: sums of eqs. (25), (26)."""
 
     solution: SeriesSolution
+    dini_is_truncation = False
 
     @property
     def stick_radius(self) -> float:
@@ -121,6 +123,7 @@ class AbelFredholm:
     solution: FastSolution
     n_terms: int | None = None
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
+    dini_is_truncation = True
 
     @property
     def stick_radius(self) -> float:
@@ -141,14 +144,18 @@ class AbelFredholm:
         return self.solution.interface_displacement(r)
 
     def sigma_rt(self, r):
-        """du/dr - u/r of the interface displacement by second-order differences (0 on the stick disc).
+        """du/dr - u/r of the interface displacement (0 on the stick disc).
 
-        Central differences inside the slip annulus, one-sided ones within the step of r = b
-        or r = 1 (~1e-9; ~1e-5 within 1e-4 of r = 1, where the corner makes u less smooth);
-        exactly 0 at r = 1 (traction-free side, eq. 9).
+        b < 1/2: ``FastSolution.interface_sigma_rt`` (quadrature of F7 and K5, no
+        differences: a step of 1e-5 would not resolve a small stick disc).  b >= 1/2:
+        second-order differences, central inside the slip annulus, one-sided within the
+        step of r = b or r = 1 (~1e-9; ~1e-5 within 1e-4 of r = 1, where the corner makes u
+        less smooth); exactly 0 at r = 1 (traction-free side, eq. 9).
         """
-        out = np.zeros_like(r)
         b = self.stick_radius
+        if b < 0.5:
+            return self.solution.interface_sigma_rt(r)
+        out = np.zeros_like(r)
         slipping = r > b
         x = r[slipping]
         if x.size:
@@ -178,15 +185,27 @@ class AbelFredholm:
 
 
 @dataclass(frozen=True)
+class Asymptotic(AbelFredholm):
+    """A state of ``asymptotics`` (``EdgeCrack`` or ``SmallStickDisc``): its own sigma_rt(r, 0)."""
+
+    def sigma_rt(self, r):
+        return self.solution.interface_sigma_rt(r)
+
+    def metadata(self) -> dict:
+        kind = "small slip (edge crack)" if self.stick_radius > 0.5 else "small stick disc"
+        return {"n_nodes": 0, "asymptote": kind}
+
+
+@dataclass(frozen=True)
 class Spinning(AbelFredholm):
     """b = 0, T* = 4/3: traction 1 everywhere, unbounded relative rotation (omega = +inf).
 
-    Stresses are finite; the displacement and slip are infinite for r > 0.
+    Stresses are finite (sigma_rt(r, 0) from eq. K5); the displacement and slip are
+    infinite for r > 0.
     """
 
     def displacement(self, r):
         return np.where(r > 0, math.inf, 0.0)
 
     def sigma_rt(self, r):
-        lam, amplitudes = self.dini(0.0, 0.0)
-        return -(special.jv(2, np.multiply.outer(r, lam)) @ (amplitudes * lam))
+        return asymptotics.spinning_sigma_rt(r)

@@ -5,11 +5,14 @@ Dimensional inputs are in any consistent units (N, m, Pa); results are dimension
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 
 __all__ = [
     "SLIP_ONSET_TORQUE",
     "GROSS_SLIP_TORQUE",
+    "spinning_deficit",
     "von_mises_index",
     "von_mises_torque_limit",
 ]
@@ -18,6 +21,22 @@ __all__ = [
 SLIP_ONSET_TORQUE = 1.0
 #: T* at which the whole face slips (traction f p0 everywhere: T = 2 pi a^3 f p0 / 3).
 GROSS_SLIP_TORQUE = 4.0 / 3.0
+
+
+#: 4/3 - float(4/3), the rounding of GROSS_SLIP_TORQUE (exact: Fraction(4, 3) - Fraction(4/3)).
+_GROSS_SLIP_ROUNDING = float(Fraction(4, 3) - Fraction(GROSS_SLIP_TORQUE))
+
+
+def spinning_deficit(torque):
+    """4/3 - T* for floats T* near 4/3, to the rounding of the result (vectorised).
+
+    (4/3 - float(4/3)) + (float(4/3) - T*): the second difference is exact for
+    2/3 <= T* <= 8/3 (Sterbenz), so the deficit keeps its relative accuracy even when it is
+    a few ulp of 4/3, where 4/3 - T* in floating point would lose every digit.
+    """
+    torque = np.asarray(torque, dtype=float)
+    out = _GROSS_SLIP_ROUNDING + (GROSS_SLIP_TORQUE - torque)
+    return out if out.ndim else float(out)
 
 
 def von_mises_index(torque, normal_force, radius, shear_yield):

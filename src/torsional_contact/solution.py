@@ -17,12 +17,17 @@ displacements change sign, b does not.
 
 Methods
 -------
-* ``solvers.abel_fredholm`` (default): the Abel-Fredholm method (``solvers.abel_fredholm``; T*, omega to
+* ``fast`` (default): the Abel-Fredholm method (``solvers.abel_fredholm``; T*, omega to
   ~1e-14, interface traction and slip to ~1e-12, about 1 ms per stick radius).  Interface
   values (z = 0) are the method's own; fields at z > 0 are summed from Dini amplitudes
   computed from its traction, with as many terms as the smallest requested z > 0 and the
-  ``tolerance`` need (``fields.dini_terms``).
-* ``complete`` / ``published``: the weak forms of ``solvers.weak_form`` at ``n_terms``.
+  ``tolerance`` need (``fields.dini_terms``, at most ``fields.MAX_FIELD_TERMS``; what the
+  cap omits is estimated and warned about once per call).  At the ends of partial slip it
+  switches to the expansions of ``asymptotics`` (exact to rounding there): T* and omega
+  for 1 - b < 2e-5, everything for 1 - b < 1e-6 and for b < 1e-8.  ``solve(torque=)``
+  inverts the same T*(b), so both directions switch at the same place.
+* ``complete`` / ``published``: the weak forms of ``solvers.weak_form`` at ``n_terms``
+  (1 to ``MAX_SERIES_TERMS``).
 
 Each kind of solution is a backend of ``backends`` with one small interface; ``Solution``
 adds the sign, the regime and the fields off the interface.  The inverse problem
@@ -38,16 +43,25 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import fields, validation
-from .backends import AbelFredholm, Bilateral, Series, Spinning
+from . import asymptotics, fields, validation
+from .backends import AbelFredholm, Asymptotic, Bilateral, Series, Spinning
 from .criteria import GROSS_SLIP_TORQUE
-from .diagnostics import ResolutionWarning
+from .diagnostics import TruncationWarning, UnphysicalResultWarning
 from .inverse import invert_abel_fredholm, invert_series
 from .solvers.abel_fredholm import solve_fast
+from .solvers.weak_form import MAX_SERIES_TERMS, minimum_inverse_terms, solve_series
 from .solvers.weak_form import METHODS as SERIES_METHODS
-from .solvers.weak_form import solve_series
 
-__all__ = ["Solution", "solve", "with_tolerance", "METHODS", "DEFAULT_METHOD", "DEFAULT_N_TERMS", "torque_curve"]
+__all__ = [
+    "Solution",
+    "solve",
+    "with_tolerance",
+    "METHODS",
+    "DEFAULT_METHOD",
+    "DEFAULT_N_TERMS",
+    "MAX_SERIES_TERMS",
+    "torque_curve",
+]
 
 #: Every method ``solve`` accepts; the first is the default.
 METHODS = ("fast",) + SERIES_METHODS
@@ -98,22 +112,67 @@ class Solution:
     def traction(self, r):
         """Interface shear traction sigma_zt(r, 0) / (f p0), eqs. (8), (26)."""
         r = validation.coordinates(r)
-        return self.sign * self.backend.traction(r)
+        return self.sign * self._physical(self.backend.traction(r), r, "traction")
 
     def slip(self, r):
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (0 on the stick disc up to the method's error)."""
         r = validation.coordinates(r)
-        return 2.0 * self.sign * self.backend.displacement(r)
+        return 2.0 * self.sign * self._physical(self.backend.displacement(r), r, "slip")
+
+    def _physical(self, values, r, kind):
+        """``values`` (positive torque), with an UnphysicalResultWarning once if a truncated weak form
+        puts the traction above the friction limit or the slip below 0 (its Gibbs oscillation)."""
+        if not isinstance(self.backend, Series) or not values.size:
+            return values
+        if kind == "traction":
+            worst = float(np.max(np.abs(values)))
+            bad = worst > 1.0 + 1e-12
+            text = f"|traction| up to {worst:.8g}, above the friction limit 1"
+        else:
+            slipping = r > self.stick_radius
+            worst = float(np.min(values[slipping])) if slipping.any() else 0.0
+            bad = worst < -1e-12 * max(1.0, float(np.max(np.abs(values))))
+            text = f"slip down to {2 * worst:.3g} < 0 on the slip annulus"
+        if bad:
+            warnings.warn(
+                f"the {self.method} weak form at n_terms={self.n_terms} gives {text}: the truncated series "
+                "oscillates (Gibbs) near r = b and r = 1; raise n_terms or use the default method",
+                UnphysicalResultWarning,
+                stacklevel=3,
+            )
+        return values
 
     # -- fields anywhere -----------------------------------------------------------------
-    def _dini_sum(self, order, weight_power, r, z):
-        """sum_n c_n lam_n^p exp(-lam_n z) J_order(lam_n r) (positive torque), or None without a series."""
+    def _series(self, z, weight_power):
+        """(lam_n, c_n) for the points z > 0, or None without a corrective field.
+
+        Warns once (``TruncationWarning``) when the terms a solution known at the interface
+        can afford (``fields.MAX_FIELD_TERMS``, or the user's ``n_terms``) leave a tail
+        above ``tolerance`` at the smallest z > 0, with the estimate of ``fields.tail_estimate``.
+        """
         positive = z[z > 0]
-        series = self.backend.dini(float(positive.min()) if positive.size else 0.0, self.tolerance)
+        if not positive.size:
+            return None
+        z_min = float(positive.min())
+        series = self.backend.dini(z_min, self.tolerance)
         if series is None:
             return None
         lam, amplitudes = series
-        return fields.series_sum(order, lam, amplitudes * lam**weight_power, r, z, self.tolerance)
+        if self.backend.dini_is_truncation and fields.required_terms(z_min, self.tolerance) > lam.size:
+            b = self.backend.stick_radius
+            radius = b if b > 0 else None  # where the terms add in phase; spinning: a bound (the axis)
+            bound = fields.tail_estimate(lam, amplitudes, weight_power, z_min, radius)
+            if bound > self.tolerance:
+                what = "stresses" if weight_power else "displacements"
+                warnings.warn(
+                    f"{what} at z down to {z_min:.3g} are summed with {lam.size} Dini terms: the omitted tail "
+                    f"is estimated at {bound:.1e} (tolerance={self.tolerance:g}; from the decay of the computed "
+                    f"amplitudes); interface values (z = 0) are exact and the error falls like "
+                    f"exp(-{lam[-1]:.0f} z) away from it",
+                    TruncationWarning,
+                    stacklevel=3,
+                )
+        return lam, amplitudes
 
     def stress(self, r, z):
         """(sigma_zt, sigma_rt) / (f p0) at (r, z), z >= 0; eqs. (2), (3), (23), (24)."""
@@ -122,15 +181,16 @@ class Solution:
         sigma_zt = backend.torque * r
         sigma_rt = np.zeros(r.shape)
         inside = z > 0
-        if inside.any():
+        series = self._series(z, 1)
+        if series is not None:
+            lam, amplitudes = series
             ri, zi = r[inside], z[inside]
-            shear = self._dini_sum(1, 1, ri, zi)
-            if shear is not None:
-                sigma_zt[inside] -= shear
-                sigma_rt[inside] = -self._dini_sum(2, 1, ri, zi)
+            weights = amplitudes * lam
+            sigma_zt[inside] -= fields.series_sum(1, lam, weights, ri, zi, self.tolerance)
+            sigma_rt[inside] = -fields.series_sum(2, lam, weights, ri, zi, self.tolerance)
         face = ~inside
         if face.any():
-            sigma_zt[face] = backend.traction(r[face])
+            sigma_zt[face] = self._physical(backend.traction(r[face]), r[face], "traction")
             sigma_rt[face] = backend.sigma_rt(r[face])
         return self.sign * sigma_zt.reshape(shape), self.sign * sigma_rt.reshape(shape)
 
@@ -140,10 +200,10 @@ class Solution:
         backend = self.backend
         out = backend.torque * r * z + backend.rigid_rotation * r
         inside = z > 0
-        if inside.any():
-            correction = self._dini_sum(1, 0, r[inside], z[inside])
-            if correction is not None:
-                out[inside] += correction
+        series = self._series(z, 0)
+        if series is not None:
+            lam, amplitudes = series
+            out[inside] += fields.series_sum(1, lam, amplitudes, r[inside], z[inside], self.tolerance)
         face = ~inside
         if face.any():
             out[face] = backend.displacement(r[face])
@@ -175,7 +235,7 @@ def _solution(backend, sign, regime, method, n_terms, tolerance, torque=None) ->
     return Solution(
         stick_radius=backend.stick_radius,
         torque=sign * backend.torque if torque is None else torque,
-        rigid_rotation=sign * omega,
+        rigid_rotation=sign * omega + 0.0,  # no -0.0 in stick
         regime=regime,
         method=method,
         n_terms=n_terms,
@@ -187,29 +247,30 @@ def _solution(backend, sign, regime, method, n_terms, tolerance, torque=None) ->
 def _for_stick_radius(b: float, method: str, n_terms) -> tuple:
     """(backend, regime) for 0 <= b < 1, positive torque."""
     regime = "gross-slip" if b == 0.0 else "partial-slip"
-    if method == "fast":
-        kind = Spinning if b == 0.0 else AbelFredholm
-        return kind(solve_fast(b), n_terms), regime
-    return Series(solve_series(b, method, n_terms)), regime
+    if method != "fast":
+        return Series(solve_series(b, method, n_terms)), regime
+    return _fast_backend(b, n_terms), regime
 
 
-def _onset_asymptote(target: float, sign: float) -> Bilateral:
-    """1 < T* < T*(b_max): a slip annulus narrower than the Abel-Fredholm method resolves (< ~1.5e-6).
-
-    From the small-slip asymptotics (``histories.energy`` docstring): 1 - b = (pi/2)(T* - 1)
-    and omega = (pi^3/12)(T* - 1)^3, both to relative O(T* - 1).  The fields are the
-    bilateral ones with the traction capped at the friction limit.
-    """
-    excess = target - 1.0
-    warnings.warn(
-        f"torque={sign * target:.17g} is within {excess:.1e} of slip onset: its slip annulus "
-        f"({0.5 * math.pi * excess:.1e} wide) is narrower than the fast method resolves; the stick radius and "
-        "rigid rotation come from the small-slip asymptotes and the fields are the bilateral ones capped at the "
-        f"friction limit (errors below {excess:.0e} in traction)",
-        ResolutionWarning,
-        stacklevel=4,
-    )
-    return Bilateral(target, math.pi**3 / 12.0 * excess**3, 1.0 - 0.5 * math.pi * excess)
+def _fast_backend(b: float, n_terms, solution=None):
+    """The default method at 0 <= b < 1: Abel-Fredholm between the switches of ``asymptotics``."""
+    if b == 0.0:
+        return Spinning(solve_fast(0.0), n_terms)
+    if b < asymptotics.SPINNING_SWITCH:
+        return Asymptotic(asymptotics.small_stick_disc(b), n_terms)
+    delta = 1.0 - b
+    if delta < asymptotics.ONSET_FIELDS:
+        return Asymptotic(asymptotics.edge_crack(b), n_terms)
+    solution = solve_fast(b) if solution is None else solution
+    if delta < asymptotics.ONSET_SCALARS:  # (S1), (S2): exact to rounding, the solver to ~1e-12
+        torque = float(asymptotics.onset_torque(delta))
+        solution = dataclasses.replace(
+            solution,
+            torque=torque,
+            rigid_rotation=float(asymptotics.onset_rotation(delta)),
+            torque_deficit=GROSS_SLIP_TORQUE - torque,
+        )
+    return AbelFredholm(solution, n_terms)
 
 
 def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None) -> Solution:
@@ -228,8 +289,9 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
         ``published``: eq. (38) exactly as printed; ``complete``: the same weak form
         with the missing rigid-rotation mode.
     n_terms : int, optional
-        Series methods: number of eigenfunctions, >= 1 (default 145, the paper's).
-        ``fast``: number of Dini terms for fields at z > 0 (default: chosen per call).
+        Series methods: number of eigenfunctions, 1 to ``MAX_SERIES_TERMS`` = 10000
+        (default 145, the paper's; memory ~16 N^2 bytes).  ``fast``: number of Dini terms
+        for fields at z > 0, 1 to ``fields.MAX_FIELD_TERMS`` = 4096 (default: chosen per call).
     tolerance : float, optional
         Absolute accuracy of the stresses (f p0) and displacements (f p0 a / mu) off the
         interface; default 1e-12.  A figure needs ~1e-4 and sums fewer terms.
@@ -243,12 +305,21 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
     ValueError
         Naming the argument and its valid range, for non-finite or out-of-range
         numbers, |torque| > 4/3 (the cylinders spin: no static solution), both or
-        neither of stick_radius/torque, n_terms < 1, tolerance not in [0, 1], or an
-        unknown method.
+        neither of stick_radius/torque, n_terms outside [1, MAX_SERIES_TERMS] (weak
+        forms) or [1, fields.MAX_FIELD_TERMS] (``fast``), tolerance not in [0, 1], an
+        unknown method, or an inverse problem that the weak form's n_terms cannot resolve.
+
+    Warns
+    -----
+    AccuracyWarning (ResolutionWarning, IllConditioningWarning, TruncationWarning) and
+    UnphysicalResultWarning, each naming what is lost; see the README.
     """
     method = validation.choice("method", DEFAULT_METHOD if method is None else method, METHODS)
     if n_terms is not None or method != "fast":
-        n_terms = validation.positive_int("n_terms", DEFAULT_N_TERMS if n_terms is None else n_terms)
+        maximum = fields.MAX_FIELD_TERMS if method == "fast" else MAX_SERIES_TERMS
+        n_terms = validation.positive_int(
+            "n_terms", DEFAULT_N_TERMS if n_terms is None else n_terms, maximum,
+            note=f" (method {method!r}; memory and time grow like n_terms^2)")
     tolerance = validation.real_number(
         "tolerance", fields.DEFAULT_TOLERANCE if tolerance is None else tolerance, 0.0, 1.0)
     if (stick_radius is None) == (torque is None):
@@ -269,9 +340,21 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
         backend, _ = _for_stick_radius(0.0, method, n_terms)
         return _solution(backend, sign, "gross-slip", method, n_terms, tolerance)
     if method == "fast":
-        fs = invert_abel_fredholm(magnitude)
-        backend = _onset_asymptote(magnitude, sign) if fs is None else AbelFredholm(fs, n_terms)
+        excess = magnitude - 1.0
+        fs = None
+        if excess > float(asymptotics.onset_torque(asymptotics.ONSET_SCALARS)) - 1.0:
+            fs = invert_abel_fredholm(magnitude)
+        if fs is None:  # the small-slip expansion (S1), inverted exactly
+            backend = _fast_backend(1.0 - float(asymptotics.onset_slip_width(excess)), n_terms)
+        else:
+            backend = _fast_backend(fs.stick_radius, n_terms, fs)
     else:
+        minimum = minimum_inverse_terms()
+        if n_terms < minimum:
+            raise ValueError(
+                f"n_terms must be >= {minimum} for method {method!r} with a torque, got {n_terms}: fewer terms "
+                "resolve no stick radius (stick disc and slip annulus each need 10 wavelengths of the highest term)"
+            )
         backend = Series(invert_series(magnitude, method, n_terms))
     # Report the torque asked for; the fields use the backend's own T*(b), which differs
     # from it by the root-finding tolerance (about 1e-12 or less).

@@ -28,12 +28,13 @@ def real_number(name: str, value, low: float | None = None, high: float | None =
     return value
 
 
-def positive_int(name: str, value) -> int:
-    """Return ``value`` as an int >= 1 or raise ValueError naming ``name``."""
+def positive_int(name: str, value, maximum: int | None = None, note: str = "") -> int:
+    """Return ``value`` as an int in [1, maximum] (no maximum: >= 1) or raise ValueError naming ``name``."""
+    valid = "an integer >= 1" + (f" and <= {maximum}" if maximum is not None else "")
     if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)):
-        raise ValueError(f"{name} must be an integer >= 1, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be an integer >= 1, got {value!r}")
+        raise ValueError(f"{name} must be {valid}{note}, got {value!r}")
+    if value < 1 or (maximum is not None and value > maximum):
+        raise ValueError(f"{name} must be {valid}{note}, got {value!r}")
     return int(value)
 
 
@@ -44,14 +45,27 @@ def choice(name: str, value, options) -> str:
     return value
 
 
+def _real_array(name: str, value, valid: str) -> np.ndarray:
+    """``value`` (a real number or an array of them: no strings, no booleans) as a float array."""
+    array = np.asarray(value)
+    if not isinstance(value, np.ndarray) or array.dtype.kind == "O":  # numbers, lists: look at every element
+        elements = np.asarray(value, dtype=object).ravel()
+        if not all(isinstance(v, (numbers.Real, np.floating, np.integer)) and not isinstance(v, (bool, np.bool_))
+                   for v in elements):
+            raise ValueError(f"{name} must be a real number or an array of real numbers {valid}, got {value!r}")
+    if array.dtype.kind not in "fiu":
+        raise ValueError(f"{name} must be a real number or an array of real numbers {valid}, got {value!r}")
+    return array.astype(float)
+
+
 def coordinates(r, z=None):
-    """Validate field coordinates: 0 <= r <= 1, z >= 0, all finite; returns float arrays."""
-    r = np.asarray(r, dtype=float)
+    """Validate field coordinates: 0 <= r <= 1, z >= 0, all finite real numbers; returns float arrays."""
+    r = _real_array("r", r, "in [0, 1]")
     if not np.all(np.isfinite(r)) or np.any(r < 0) or np.any(r > 1):
         raise ValueError("r must be finite and lie in [0, 1] (units of the cylinder radius a)")
     if z is None:
         return r
-    z = np.asarray(z, dtype=float)
+    z = _real_array("z", z, ">= 0")
     if not np.all(np.isfinite(z)) or np.any(z < 0):
         raise ValueError("z must be finite and >= 0 (the upper cylinder; units of a)")
     return r, z
@@ -73,13 +87,26 @@ def torque(name: str, value) -> float:
 
 
 def torque_sequence(name: str, values) -> list[float]:
-    """``values`` as a non-empty list of finite torques in [-4/3, 4/3], or ValueError naming ``name[i]``."""
-    try:
-        items = list(np.asarray(values, dtype=object).ravel()) if not isinstance(values, (str, bytes)) else None
-    except TypeError as exc:  # not iterable
-        raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}") from exc
-    if items is None:
+    """``values`` as a non-empty list of finite torques in [-4/3, 4/3], or ValueError naming ``name[i]``.
+
+    A flat sequence or 1-d array only: a nested one (e.g. [[0, 1.2], [1.3, 0]]) is refused,
+    not flattened, since its order of turning points would be a guess.
+    """
+    if isinstance(values, (str, bytes)) or np.ndim(values) == 0 and not hasattr(values, "__iter__"):
         raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}")
+    if isinstance(values, np.ndarray):
+        if values.ndim != 1:
+            raise ValueError(
+                f"{name} must be a flat (1-d) sequence of torques in [-4/3, 4/3], got shape {values.shape}")
+        items = list(values)
+    else:
+        try:
+            items = list(values)
+        except TypeError as exc:  # not iterable
+            raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}") from exc
     if not items:
         raise ValueError(f"{name} must contain at least one torque in [-4/3, 4/3]")
+    for i, v in enumerate(items):
+        if isinstance(v, (str, bytes)) or np.ndim(v) != 0:
+            raise ValueError(f"{name}[{i}] must be a real number in [-4/3, 4/3] (a flat sequence), got {v!r}")
     return [torque(f"{name}[{i}]", v) for i, v in enumerate(items)]

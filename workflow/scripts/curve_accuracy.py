@@ -19,8 +19,8 @@ import numpy as np
 from scipy import optimize
 
 from torsional_contact import ResolutionWarning
-from torsional_contact.curves import loading_work, monotonic_curves, torque_gap_of
-from torsional_contact.curves.table import torque_gap
+from torsional_contact.criteria import spinning_deficit
+from torsional_contact.curves import loading_work, monotonic_curves
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle
 from torsional_contact.provenance import write_json, write_macros
 from torsional_contact.solvers.abel_fredholm import solve_fast
@@ -41,7 +41,7 @@ def by_radius(curves, per_panel, rng):
             s = direct(b)
             w = loading_work(s)
             rows.append({"b": b, "torque": abs(curves.torque(b) - s.torque),
-                         "torque_gap_rel": abs(curves.torque_gap(b) / torque_gap(s) - 1),
+                         "torque_gap_rel": abs(curves.torque_gap(b) / s.torque_deficit - 1),
                          "rigid_rotation": abs(curves.rotation_at_radius(b) - s.rigid_rotation),
                          "loading_work_rel": abs(curves.work_at_radius(b) / w - 1)})
     return rows
@@ -51,8 +51,8 @@ def root(curves, tau):
     guess = float(curves.stick_radius(tau))
     lo, hi = max(guess * (1 - 1e-6) - 1e-12, 1e-7), min(guess * (1 + 1e-6) + 1e-12, curves.b_high)
     if tau > curves.t_split:
-        gap = float(torque_gap_of(tau))
-        return optimize.brentq(lambda b: torque_gap(direct(b)) - gap, lo, hi, xtol=1e-17, rtol=1e-15)
+        gap = float(spinning_deficit(tau))
+        return optimize.brentq(lambda b: direct(b).torque_deficit - gap, lo, hi, xtol=1e-17, rtol=1e-15)
     return optimize.brentq(lambda b: direct(b).torque - tau, lo, hi, xtol=1e-16, rtol=1e-15)
 
 

@@ -6,7 +6,7 @@
 ``monotonic_curves()`` loads the shipped table once per process.
 """
 
-from .interpolant import MonotonicCurves, monotonic_curves, torque_gap_of
+from .interpolant import MonotonicCurves, monotonic_curves
 from .work import loading_work
 
-__all__ = ["MonotonicCurves", "monotonic_curves", "torque_gap_of", "loading_work"]
+__all__ = ["MonotonicCurves", "monotonic_curves", "loading_work"]

@@ -17,15 +17,13 @@ solver (``curves.table``):
 
 Beyond the table
 ----------------
-* Slip annuli delta = 1 - b < ``ONSET_DELTA`` = 2e-5 (1 < tau < 1 + 1.3e-5): the small-slip
-  asymptotes (energy docstring of ``histories.energy``), with coefficients read off the
-  table where it is accurate (3e-5 < delta < 1e-3):
-  T* - 1 = (2/pi) delta + delta^2 / 8 (the fit gives 0.12500 +- 1e-5 for the second
-  coefficient; the next term, about -2 delta^3 ln(1/delta), is below 2e-14),
-  omega = (pi^3/12) e^3 (e = T* - 1; absolute error O(e^4) < 1e-19) and
-  W_mono = (pi^4/12) e^3 (1 + 0.04 e) (relative error ~1e-2 e < 2e-7).  There the solver
-  itself loses digits (T* noise up to 3e-12 next to b_max, where it warns that its
-  Chebyshev tail is large), so the asymptotes are the more accurate of the two.
+* Slip annuli delta = 1 - b < ``ONSET_DELTA`` = ``asymptotics.ONSET_SCALARS`` = 2e-5
+  (1 < tau < 1 + 1.3e-5): the small-slip expansion of ``asymptotics``, exactly as ``solve``
+  uses it: T* - 1 = (2/pi) delta + delta^2 / 8 (S1; the table's own fit gives 0.12500 +- 1e-5
+  for the second coefficient), omega = (2/3) delta^3 + (pi/16) delta^4 (S2), and
+  W_mono = (pi^4/12) e^3 (1 + 0.04 e), e = T* - 1, whose small correction is fitted to the
+  table (relative error ~1e-2 e < 2e-7 where used).  There the solver itself loses digits
+  (T* noise up to 1.5e-12 next to b_max), so the expansion is the more accurate of the two.
 * tau within 4 ulp of 4/3 is spinning (as in ``solve``): b = 0, omega = W_mono = +inf.
 * By radius, 0 < b < 1e-6: 4/3 - T* and omega, W_mono continued from the first panel by
   their small-disc forms (b^3 and ln(1/b) growth, relative corrections O(b^2)).
@@ -38,41 +36,30 @@ import math
 
 import numpy as np
 
-from ..criteria import GROSS_SLIP_TORQUE
+from .. import asymptotics
+from ..criteria import GROSS_SLIP_TORQUE, spinning_deficit
 from .piecewise import Piecewise
 from .table import TABLE_PATH, lobatto_coefficients, read_table
 
-__all__ = ["MonotonicCurves", "monotonic_curves", "torque_gap_of", "add_by_torque"]
+__all__ = ["MonotonicCurves", "monotonic_curves", "add_by_torque"]
 
 #: Relative distance to 4/3 that counts as spinning (``validation.TORQUE_TOLERANCE``).
 SPIN_TOLERANCE = 4 * np.finfo(float).eps
-#: delta^2 coefficient of T* - 1 at small slip annuli (fitted to the table, see the docstring).
-ONSET_SECOND = 0.125
 #: e coefficient of W_mono / ((pi^4/12) e^3) - 1 at small slip annuli (fitted, see the docstring).
 ONSET_WORK = 0.04
-#: Slip annuli narrower than this use the small-slip asymptotes.
-ONSET_DELTA = 2e-5
+#: Slip annuli narrower than this use the small-slip expansion (``asymptotics``), as ``solve`` does.
+ONSET_DELTA = asymptotics.ONSET_SCALARS
 #: b at which the by-torque panels switch from tau to u = (4/3 - tau)^(1/3).
 U_SPLIT_RADIUS = 0.262144
-_TWO_OVER_PI = 2.0 / math.pi
 _OMEGA_ONSET = math.pi**3 / 12.0
 _WORK_ONSET = math.pi**4 / 12.0
 _BY_TORQUE_POINTS = 65
 _CURVES_BY_TORQUE = ("stick_radius", "rigid_rotation", "loading_work")
 
 
-def torque_gap_of(tau):
-    """4/3 - tau to a few ulp of the result (compensated: 3 tau = s + e exactly, 4 - s exact)."""
-    tau = np.asarray(tau, dtype=float)
-    double = 2.0 * tau
-    s = double + tau
-    e = tau - (s - double)
-    return ((4.0 - s) - e) / 3.0
-
-
 def _onset_radius(excess):
-    """delta = 1 - b from (2/pi) delta + delta^2/8 = T* - 1 (stable root)."""
-    return 2.0 * excess / (_TWO_OVER_PI + np.sqrt(_TWO_OVER_PI**2 + 4.0 * ONSET_SECOND * excess))
+    """delta = 1 - b for T* - 1 = excess, eq. (S1) of ``asymptotics`` inverted."""
+    return asymptotics.onset_slip_width(excess)
 
 
 def _onset_work(excess):
@@ -91,7 +78,7 @@ class MonotonicCurves:
         self.by_radius = {name: Piecewise(edges, [p[name] for p in panels])
                           for name in ("torque", "torque_gap", "rigid_rotation", "loading_work")}
         self.onset_torque = float(self.by_radius["torque"](self.b_high))  # the solver's resolution limit
-        self.trust_torque = 1.0 + _TWO_OVER_PI * ONSET_DELTA + ONSET_SECOND * ONSET_DELTA**2
+        self.trust_torque = float(asymptotics.onset_torque(ONSET_DELTA))
         low = self.by_radius
         self._small = {  # continuation below b_low (module docstring)
             "gap_ratio": float(low["torque_gap"](self.b_low)) / self.b_low**3,
@@ -124,26 +111,26 @@ class MonotonicCurves:
     def torque(self, b):
         """T*(b) for 0 <= b <= 1 (4/3 at b = 0, 1 at b = 1)."""
         return self._by_radius(
-            "torque", b, lambda d: 1.0 + _TWO_OVER_PI * d + ONSET_SECOND * d * d,
+            "torque", b, asymptotics.onset_torque,
             lambda x: GROSS_SLIP_TORQUE - self._small["gap_ratio"] * x**3, (GROSS_SLIP_TORQUE, 1.0))
 
     def torque_gap(self, b):
         """4/3 - T*(b), with relative accuracy for small stick discs."""
         return self._by_radius(
-            "torque_gap", b, lambda d: 1.0 / 3.0 - _TWO_OVER_PI * d - ONSET_SECOND * d * d,
+            "torque_gap", b, lambda d: GROSS_SLIP_TORQUE - asymptotics.onset_torque(d),
             lambda x: self._small["gap_ratio"] * x**3, (0.0, 1.0 / 3.0))
 
     def rotation_at_radius(self, b):
         """omega(b) (f p0 / mu); +inf at b = 0."""
         return self._by_radius(
-            "rigid_rotation", b, lambda d: _OMEGA_ONSET * (_TWO_OVER_PI * d + ONSET_SECOND * d * d) ** 3,
+            "rigid_rotation", b, asymptotics.onset_rotation,
             lambda x: self._small["rotation"] + 0.5 * np.log(self.b_low / x), (math.inf, 0.0))
 
     def work_at_radius(self, b):
         """W_mono(b) ((f p0)^2 a^3 / mu); +inf at b = 0."""
         s = self._small
         return self._by_radius(
-            "loading_work", b, lambda d: _onset_work(_TWO_OVER_PI * d + ONSET_SECOND * d * d),
+            "loading_work", b, lambda d: _onset_work(asymptotics.onset_torque(d) - 1.0),
             lambda x: s["work"] + s["work_slope"] * np.log(self.b_low / x), (math.inf, 0.0))
 
     # ------------------------------------------------------------------ by torque
@@ -152,14 +139,15 @@ class MonotonicCurves:
         stick, spin = {"stick_radius": (1.0, 0.0), "rigid_rotation": (0.0, math.inf),
                        "loading_work": (0.0, math.inf)}[name]
         out = np.full(tau.shape, np.nan)
-        gap = torque_gap_of(tau)
+        gap = np.asarray(spinning_deficit(tau), dtype=float)
         out[tau <= 1.0] = stick
         spinning = gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE
         out[spinning] = spin
         onset = (tau > 1.0) & (tau < self.trust_torque)
         if onset.any():
             excess = tau[onset] - 1.0
-            out[onset] = {"stick_radius": 1.0 - _onset_radius(excess), "rigid_rotation": _OMEGA_ONSET * excess**3,
+            delta = _onset_radius(excess)
+            out[onset] = {"stick_radius": 1.0 - delta, "rigid_rotation": asymptotics.onset_rotation(delta),
                           "loading_work": _onset_work(excess)}[name]
         middle = (tau >= self.trust_torque) & (tau <= self.t_split)
         if middle.any():
@@ -185,7 +173,7 @@ class MonotonicCurves:
         """(b, omega_m, W_mono) at one torque 0 <= tau <= 4/3, without numpy overhead."""
         if tau <= 1.0:
             return 1.0, 0.0, 0.0
-        gap = float(torque_gap_of(tau)) if tau > self.t_split else 0.0
+        gap = float(spinning_deficit(tau)) if tau > self.t_split else 0.0
         if tau > self.t_split:
             if gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE:
                 return 0.0, math.inf, math.inf
@@ -194,7 +182,8 @@ class MonotonicCurves:
             return c["stick_radius"].scalar(u), c["rigid_rotation"].scalar(u), c["loading_work"].scalar(u)
         if tau < self.trust_torque:
             excess = tau - 1.0
-            return 1.0 - float(_onset_radius(excess)), _OMEGA_ONSET * excess**3, float(_onset_work(excess))
+            delta = float(_onset_radius(excess))
+            return 1.0 - delta, float(asymptotics.onset_rotation(delta)), float(_onset_work(excess))
         c = self.t_curves
         return c["stick_radius"].scalar(tau), c["rigid_rotation"].scalar(tau), c["loading_work"].scalar(tau)
 

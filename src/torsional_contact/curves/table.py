@@ -34,13 +34,12 @@ import warnings
 
 import numpy as np
 
-from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import ResolutionWarning
 from ..solvers.abel_fredholm import MAX_NODES, default_nodes, solve_fast
 from .work import loading_work
 
 __all__ = ["B_LOW", "TABLE_PATH", "CURVES", "panel_edges", "largest_resolved_radius", "build_table", "write_table",
-           "read_table", "lobatto_coefficients", "torque_gap"]
+           "read_table", "lobatto_coefficients"]
 
 #: Smallest stick radius of the table (T*(B_LOW) rounds to 4/3).
 B_LOW = 1e-6
@@ -94,18 +93,11 @@ def lobatto_coefficients(values: np.ndarray) -> np.ndarray:
     return coefficients
 
 
-def torque_gap(solution) -> float:
-    """4/3 - T* with relative accuracy: (4/3) b^3 - (16/pi) int_0^b s^2 g(s) ds, from (F4)."""
-    b = solution.stick_radius
-    moment = float(np.sum(solution.weights * solution.nodes**2 * solution.abel_density))
-    return GROSS_SLIP_TORQUE * b**3 - 16.0 / np.pi * moment
-
-
 def _sample(b: float) -> tuple[float, float, float, float]:
     with warnings.catch_warnings():  # the tail check near b_max; accuracy is measured against the table
         warnings.simplefilter("ignore", ResolutionWarning)
         solution = solve_fast(b)
-    return solution.torque, torque_gap(solution), solution.rigid_rotation, loading_work(solution)
+    return solution.torque, solution.torque_deficit, solution.rigid_rotation, loading_work(solution)
 
 
 def _converged(coefficients: np.ndarray, values: np.ndarray, tolerance: tuple[float, float]) -> bool:

@@ -2,11 +2,17 @@
 
 Bad input exits with status 2 and one line on standard error; nothing is printed
 on standard output.  Accuracy warnings are printed as one line each on stderr.
+
+Numbers: every subcommand's parser (``_Parser``) takes negative numbers in any form,
+-1, -.5, -1e-1, -1E+3 (argparse alone reads "-1e-1" as an option), and the number
+options use ``real_argument`` as their type, so that "nan", "inf" and non-numbers are
+refused with exit status 2 naming the option.
 """
 
 from __future__ import annotations
 
 import argparse
+import decimal
 import json
 import math
 import re
@@ -19,9 +25,13 @@ from .. import __version__
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS"]
 
 PROG = "torsional_contact"
+
+#: What argparse must treat as a negative number rather than an option: decimal and
+#: exponent forms (argparse's own pattern, ^-\d+$|^-\d*\.\d+$, misses "-1e-1").
+NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE)
 
 
 class UsageError(Exception):
@@ -29,12 +39,40 @@ class UsageError(Exception):
 
 
 class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors and negative numbers in exponent form (every subcommand)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = NEGATIVE_NUMBER
+
     def error(self, message):  # one line, no usage dump
         raise UsageError(message)
 
 
+def real_argument(text: str) -> float:
+    """argparse ``type`` for a finite real number in decimal or exponent form ("-1e-1", "1.23")."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a real number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite real number, got {text!r}")
+    return value
+
+
 def _json_number(value):
     return value if isinstance(value, float) and math.isfinite(value) else None
+
+
+def _finite_record(record):
+    """``record`` with every non-finite float (nan, inf) replaced by None: the JSON stays valid."""
+    if isinstance(record, dict):
+        return {key: _finite_record(value) for key, value in record.items()}
+    if isinstance(record, list):
+        return [_finite_record(value) for value in record]
+    if isinstance(record, float) and not math.isfinite(record):
+        return None
+    return record
 
 
 def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
@@ -72,7 +110,22 @@ def _cmd_history(args):
                         progress=not args.no_progress, full=args.json)
 
 
-_MAX_REFERENCE_DIGITS = 1000
+#: Largest --digits of ``reference`` (working precision digits + 20; every digit printed is kept).
+MAX_REFERENCE_DIGITS = 1000
+#: Largest --n-terms of ``reference``: the mpmath assembly is O(N^2) multiple-precision
+#: products (~1 s at N = 145 and 70 digits), the solve O(N^3) (~1 min at N = 1000).
+MAX_REFERENCE_TERMS = 1000
+
+
+def _decimal_radius(name: str, text: str) -> str:
+    """``text`` if it is a finite decimal in the open interval (0, 1), read exactly (no float rounding)."""
+    try:
+        value = decimal.Decimal(text.strip())
+    except decimal.InvalidOperation:
+        raise ValueError(f"{name} must be a decimal number in (0, 1), got {text!r}") from None
+    if not value.is_finite() or not 0 < value < 1:
+        raise ValueError(f"{name} must lie in (0, 1) (open: the reference solves partial slip), got {text!r}")
+    return text.strip()
 
 
 def _cmd_reference(args) -> dict:
@@ -81,29 +134,23 @@ def _cmd_reference(args) -> dict:
     from .. import validation
     from ..verification.reference import solve_reference
 
-    text = args.stick_radius
-    try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"--stick-radius must be a real number in (0, 1), got {text!r}") from None
-    value = validation.real_number("--stick-radius", value)
-    if not 0.0 < value < 1.0:
-        raise ValueError(f"--stick-radius must lie in (0, 1) (open: the reference solves partial slip), got {text!r}")
-    digits = validation.positive_int("--digits", args.digits)
-    if digits > _MAX_REFERENCE_DIGITS:
-        raise ValueError(f"--digits must lie in [1, {_MAX_REFERENCE_DIGITS}], got {digits}")
-    n_terms = validation.positive_int("--n-terms", args.n_terms)
+    text = _decimal_radius("--stick-radius", args.stick_radius)
+    digits = validation.positive_int("--digits", args.digits, MAX_REFERENCE_DIGITS)
+    n_terms = validation.positive_int("--n-terms", args.n_terms, MAX_REFERENCE_TERMS)
     method = validation.choice("--method", args.method, SERIES_METHODS)
     solution = solve_reference(text, method, n_terms, digits)
+    kept = digits
+    if solution.solve_bound is not None and solution.solve_bound > 0:  # print only the digits the bound keeps
+        kept = max(1, min(digits, int(math.floor(float(-mpmath.log10(solution.solve_bound))))))
     with mpmath.workdps(digits):
-        torque = mpmath.nstr(solution.torque, digits, strip_zeros=False)
+        torque = mpmath.nstr(solution.torque, kept, strip_zeros=False)
         omega = solution.rigid_rotation
-        omega = None if omega is None else mpmath.nstr(omega, digits, strip_zeros=False)
+        omega = None if omega is None else mpmath.nstr(omega, kept, strip_zeros=False)
     return {
         "stick_radius": text,
         "torque": torque,
         "rigid_rotation": omega,
-        "digits": digits,
+        "digits": kept,
         "n_terms": n_terms,
         "method": method,
         "backend": solution.backend,
@@ -133,7 +180,7 @@ def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
     p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
     p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
-    p.add_argument("--radii", type=float, nargs="+", help="also report traction and slip at these r/a")
+    p.add_argument("--radii", type=real_argument, nargs="+", help="also report traction and slip at these r/a")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -143,8 +190,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("solve", help="solve for a stick radius or a torque")
     group = p.add_mutually_exclusive_group(required=True)
-    group.add_argument("--stick-radius", type=float, help="b/a in [0, 1]")
-    group.add_argument("--torque", type=float, help="T* = 2T/(f F a) in [-4/3, 4/3]")
+    group.add_argument("--stick-radius", type=real_argument, help="b/a in [0, 1]")
+    group.add_argument("--torque", type=real_argument, help="T* = 2T/(f F a) in [-4/3, 4/3]")
     _add_solver_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
@@ -160,8 +207,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision (mpmath) solution of the truncated system")
     p.add_argument("--stick-radius", required=True, help="b/a in (0, 1), read as a decimal")
-    p.add_argument("--n-terms", type=int, default=145, help="number of eigenfunctions (default 145)")
-    p.add_argument("--digits", type=int, default=50, help="significant digits (default 50)")
+    p.add_argument("--n-terms", type=int, default=145,
+                   help=f"number of eigenfunctions, 1 to {MAX_REFERENCE_TERMS} (default 145)")
+    p.add_argument("--digits", type=int, default=50,
+                   help=f"significant digits, 1 to {MAX_REFERENCE_DIGITS} (default 50; fewer if the solve keeps fewer)")
     p.add_argument("--method", default="complete", help=f"one of {', '.join(SERIES_METHODS)} (default complete)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_reference)
@@ -187,6 +236,7 @@ def main(argv=None) -> int:
         return 2
     finally:
         warnings.formatwarning = saved_format
+    result = _finite_record(result)
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
     elif isinstance(result, list):  # one record per line

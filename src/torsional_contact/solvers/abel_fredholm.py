@@ -53,9 +53,24 @@ Nystrom with Gauss-Legendre in theta, t = b cos(theta), 0 < theta < pi/2: every
 integrand above is analytic in theta (the sqrt(b^2 - t^2) of L becomes b sin(theta)),
 so the error decays geometrically; the rate is set by the image singularity of P at
 t + s = 2, i.e. theta = i arccosh((2 - b)/b), and the default number of nodes is
-chosen from that (``default_nodes``).  G = g + L is an even analytic function of t
-and is interpolated as a Chebyshev series in x = 2 t^2/b^2 - 1 = cos(2 theta) for
-(F6).  D(t) is interpolated as a Chebyshev series in psi = arccos(t) on [0, arccos b]
+chosen from that (``default_nodes``).  G = g + L is an even function of t, analytic
+for |Re t| < 1 (its nearest singularity is the side image of E_1 at t = 1, 1 - b from
+the stick edge); it is interpolated as a Chebyshev series in the logarithmic variable
+
+    Y = 2 ln(1 - t^2) / ln(1 - b^2) - 1,        0 <= t <= b  <->  -1 <= Y <= 1,     (F8)
+
+which keeps a strip of analyticity of width O(1) however thin the slip annulus is
+(Chebyshev in t^2 would need ~10 / sqrt(1 - b) terms; in Y about 15 at b = 0.6 and
+200 at 1 - b = 1e-6).  (F6) is then integrated in Y: with v = w^2 = ln((1 - rho^2) /
+(1 - s^2)),
+
+    int_rho^b G'(s) ds / sqrt(s^2 - rho^2)
+        = 2 / (|ln(1 - b^2)| sqrt(1 - rho^2)) int_0^sqrt(V) G_Y(Y(w)) 2w / sqrt(1 - exp(-w^2)) dw,  (F9)
+
+V = ln((1 - rho^2) / (1 - b^2)): a polynomial in w times an analytic factor, integrated
+by Gauss-Legendre with ``len(series) + interface.INNER_EXTRA`` nodes (exact to rounding); G_Y is
+sampled from the derivative of the Nystrom interpolant, not differentiated term by term.
+D(t) is interpolated as a Chebyshev series in psi = arccos(t) on [0, arccos b]
 (analytic there, including t = 1 where the corner of the cylinder gives
 sqrt(1 - t) terms), and (F7) is integrated over psi with a cosh substitution that
 removes the inverse square root at t = r.
@@ -76,24 +91,31 @@ from ..diagnostics import ResolutionWarning
 from ..quadrature import gauss_legendre
 from ..special import integrals
 from ..special.zeros import bessel_j2_zeros
-from . import kernels
+from . import interface, kernels
+from .interface import chebyshev_coefficients as _chebyshev_coefficients
+from .interface import log_gap
 
-__all__ = ["FastSolution", "solve_fast", "default_nodes", "MAX_NODES"]
+__all__ = ["FastSolution", "solve_fast", "default_nodes", "log_gap", "MAX_NODES", "MIN_STICK_RADIUS"]
 
-#: Cap on the Nystrom nodes; default_nodes exceeds it for b within ~1.5e-6 of 1 (warns).
-MAX_NODES = 400
+#: Cap on the Nystrom nodes; default_nodes exceeds it for b within ~8e-7 of 1 (warns).
+MAX_NODES = 512
+#: Smallest stick radius solved (below, b^2 underflows against 1; ``asymptotics`` takes over).
+MIN_STICK_RADIUS = 1e-100
 #: Chebyshev points (in psi) for the slip integrand D(t) on [b, 1].
 SLIP_POINTS = 64
-#: Gauss-Legendre nodes per panel of the slip quadrature (F7).
-_SLIP_PANEL_NODES = 40
+#: Chebyshev points (in t on [0, 1]) for the smooth part m(t) of D/t (sigma_rt, b < 1/2).
+CORRECTION_POINTS = 48
 #: Phase (rad) of sin(lam_N t) per 32-point Gauss panel in ``dini_amplitudes``.
 DINI_PHASE = 20.0
-#: Extra Chebyshev points (beyond n_nodes) for the series of G used by (F6).
-CHEBYSHEV_EXTRA = 8
+#: Most Chebyshev terms of the series of G in the variable Y of (F8).
+MAX_CHEBYSHEV = 512
+#: Half-width (in ln(1 - t^2)) of the strip in which G is analytic, a safe lower bound.
+_STRIP_HALF_WIDTH = 1.3
 #: Warn when the last Chebyshev coefficients of G exceed this (absolute, f p0 units).
 RESOLUTION_TOLERANCE = 1e-10
 
 _TARGET_DIGITS = math.log(1e17)
+_CHUNK_ENTRIES = 500_000  # (lam, s) entries evaluated at once in ``dini_amplitudes``
 
 
 def default_nodes(stick_radius: float) -> int:
@@ -104,7 +126,8 @@ def default_nodes(stick_radius: float) -> int:
     Gauss-Legendre converges like rho^(-2n).
     """
     b = float(stick_radius)
-    height = math.acosh((2.0 - b) / b) / (math.pi / 4.0)
+    # arccosh((2 - b)/b) = 2 arcsinh(sqrt((1 - b)/b)): no overflow for tiny b
+    height = 2.0 * math.asinh(math.sqrt(1.0 - b) / math.sqrt(b)) / (math.pi / 4.0)
     z = complex(-1.0, height)
     root = np.sqrt(z * z - 1.0)
     rho = max(abs(z + root), abs(z - root))
@@ -113,26 +136,20 @@ def default_nodes(stick_radius: float) -> int:
 
 
 def _chebyshev_points(b: float) -> int:
-    """Chebyshev points in x = 2 t^2/b^2 - 1 for ~1e-16 decay of the series of G.
+    """Chebyshev points in Y of (F8) for ~1e-16 decay of the series of G.
 
-    G(t) is analytic up to t = 2 - b, i.e. x_s = 2 (2 - b)^2 / b^2 - 1 > 1.
+    G is analytic in a strip |Im ln(1 - t^2)| < ~1.3 (from Re t < 1); over the interval
+    of length |ln(1 - b^2)| mapped to [-1, 1] that is a Bernstein ellipse of parameter
+    rho = eta + sqrt(1 + eta^2), eta = 2.6 / |ln(1 - b^2)|.
     """
-    x_s = 2.0 * ((2.0 - b) / b) ** 2 - 1.0
-    rho = x_s + math.sqrt(x_s * x_s - 1.0)
-    return math.ceil(_TARGET_DIGITS / math.log(rho)) + 4
+    eta = 2.0 * _STRIP_HALF_WIDTH / float(-log_gap(b))
+    rho = eta + math.sqrt(1.0 + eta * eta)
+    return min(MAX_CHEBYSHEV, max(12, math.ceil(_TARGET_DIGITS / math.log(rho)) + 8))
 
 
 def _gauss_theta(n: int):
     x, w = gauss_legendre(n)
     return np.pi / 4.0 * (x + 1.0), np.pi / 4.0 * w
-
-
-def _chebyshev_coefficients(values, n: int):
-    """Chebyshev coefficients from values at the first-kind points cos(pi (j + 1/2) / n)."""
-    angles = np.pi * (np.arange(n) + 0.5) / n
-    c = (2.0 / n) * (np.cos(np.outer(np.arange(n), angles)) @ values)
-    c[0] *= 0.5
-    return c
 
 
 @dataclass(frozen=True)
@@ -154,8 +171,11 @@ class FastSolution:
     nodes, weights, abel_density : ndarray
         Nystrom nodes t_j = b cos(theta_j), weights for int_0^b dt, values g(t_j) (F2).
     resolution_estimate : float
-        Max of the last three Chebyshev coefficients of G = g + L in x = 2 t^2/b^2 - 1
-        (an a-posteriori proxy for the resolution error of the traction).
+        Max of the last three Chebyshev coefficients of G = g + L in Y of (F8) (an
+        a-posteriori proxy for the resolution error of the traction).
+    torque_deficit : float
+        4/3 - T* from (F4) without cancellation: (4/3) b^3 - (16/pi) int_0^b s^2 g ds
+        (relative accuracy ~1e-15 even where 4/3 - T* is far below the rounding of T*).
     """
 
     stick_radius: float
@@ -167,42 +187,76 @@ class FastSolution:
     weights: np.ndarray = field(repr=False)
     abel_density: np.ndarray = field(repr=False)
     resolution_estimate: float = field(repr=False)
+    torque_deficit: float = field(repr=False)
+    _log_span: float = field(repr=False)
     _xi: np.ndarray = field(repr=False)
     _xi_weights: np.ndarray = field(repr=False)
     _g_chebyshev: np.ndarray = field(repr=False)
 
     # -- interface traction -------------------------------------------------------
+    @cached_property
+    def _gy_chebyshev(self):
+        """Chebyshev coefficients of dG/dY = G'(t) (span/4)(1 - t^2)/t in Y of (F8) (for F9).
+
+        Sampled from the derivative of the Nystrom interpolant of G at the Chebyshev points
+        of G and expanded on their own: differentiating the series of G would amplify its
+        rounding ~n^2 times at the stick edge Y = 1, where (F9) needs it most.
+        """
+        b, span, n_cheb = self.stick_radius, self._log_span, self._g_chebyshev.size
+        y_cheb = np.cos(np.pi * (np.arange(n_cheb) + 0.5) / n_cheb)
+        gap_factor = np.exp(-0.5 * (y_cheb + 1.0) * span)  # 1 - t^2
+        t_cheb = np.sqrt(-np.expm1(-0.5 * (y_cheb + 1.0) * span))
+        theta, _ = _gauss_theta(self.n_nodes)
+        xi = self._xi
+        ratio = self._xi_weights * kernels.bessel_ratio_scaled(xi)
+        nodes = self.nodes
+        a_s = kernels.sinh_excess_scaled(xi, nodes, (1.0 - b) + 2.0 * b * np.sin(0.5 * theta) ** 2)
+        y_s = kernels.linear_scaled(xi, nodes)
+        full_1, _ = kernels.load_profiles(1.0, xi)
+        full_b, _ = kernels.load_profiles(b, xi)
+        slope = kernels.sinh_excess_slope(xi, t_cheb, gap_factor / (1.0 + t_cheb))  # -(d/dt) of a_t / t
+        column = self.weights * self.nodes * self.abel_density
+        g_prime = (2.0 / np.pi) * (
+            slope @ (ratio * (full_1 - full_b)) + (2.0 / np.pi) * ((slope * ratio) @ (a_s + y_s).T) @ column
+        )
+        return _chebyshev_coefficients(g_prime * (0.25 * span) * gap_factor / t_cheb, n_cheb)
+
     def interface_traction(self, r):
         """sigma_zt(r, 0) / (f p0) for 0 <= r <= 1, eq. (F6); 1 on the slip annulus."""
         r = np.asarray(r, dtype=float)
         b = self.stick_radius
         if b == 1.0:  # slip onset: the bilateral traction T* r with T* = 1
             return r.copy()
-        flat = r.ravel()
-        out = np.ones_like(flat)
-        inside = flat < b
-        rho = flat[inside]
-        if rho.size:
-            y_nodes, y_weights = gauss_legendre(self.n_nodes)
-            height = np.sqrt((b - rho) * (b + rho))
-            y = 0.5 * height[:, None] * (y_nodes[None, :] + 1.0)
-            x = 2.0 * (rho[:, None] ** 2 + y * y) / (b * b) - 1.0
-            derivative = chebyshev.chebval(x, chebyshev.chebder(self._g_chebyshev))
-            integral = 0.5 * height * (derivative @ y_weights)
-            edge = (2.0 / np.pi) * np.arctan2(rho * math.sqrt(1.0 - b * b), height)
-            out[inside] = edge - 8.0 * rho * integral / (np.pi * b * b)
-        return out.reshape(r.shape)
+        if b == 0.0 or not np.any(r < b):  # spinning: traction 1 everywhere
+            return np.ones_like(r)
+        return interface.stick_traction(r, b, self._log_span, self._gy_chebyshev)
 
     # -- slip -----------------------------------------------------------------------
     @cached_property
     def _slip_chebyshev(self):
-        """Chebyshev coefficients of D(cos psi) on psi in [0, arccos b] (F7)."""
+        """Chebyshev coefficients in psi in [0, arccos b] (t = cos psi) of the slip integrand (F7).
+
+        b >= 1/2: D(t) itself.  b < 1/2: D(t)/t + arcsech(t) = 2 Omega - (mixed + R)/t,
+        analytic in psi on the whole of [0, pi/2], whereas D has the t ln t of arcsech at
+        t = 0, just beyond the stick edge of a small stick disc.  (For b near 1 D is
+        small and is interpolated directly, keeping its relative accuracy.)
+        """
         b = self.stick_radius
         psi_b = math.acos(b)
         j = np.arange(SLIP_POINTS)
         x = np.cos(np.pi * (j + 0.5) / SLIP_POINTS)
         t = np.cos(0.5 * psi_b * (x + 1.0))
-        return _chebyshev_coefficients(self._d_function(t), SLIP_POINTS)
+        values = self._d_regular(t) if b < 0.5 else self._d_function(t)
+        return _chebyshev_coefficients(values, SLIP_POINTS)
+
+    def _d_regular(self, t):
+        """D(t)/t + arcsech(t) = 2 Omega - (mixed(t) + E_1(t) - E_b(t)) / t, 0 < t <= 1 (F7)."""
+        b = self.stick_radius
+        xi, w = self._xi, self._xi_weights
+        p = kernels.abel_kernel(t, self.nodes, xi, w)
+        mixed = (2.0 / np.pi) * p @ (self.weights * self.nodes * self.abel_density)
+        near = kernels.load_transform(t, b, xi, w)
+        return 2.0 * self.rotation_constant - (mixed + kernels.spinning_transform(t) - near) / t
 
     def _d_function(self, t):
         """D(t) of (F7) for b <= t <= 1 (direct evaluation)."""
@@ -220,8 +274,14 @@ class FastSolution:
         )
 
     def _d_interpolated(self, psi):
-        psi_b = math.acos(self.stick_radius)
-        return chebyshev.chebval(2.0 * psi / psi_b - 1.0, self._slip_chebyshev)
+        """D(cos psi) from the series of ``_slip_chebyshev`` (arcsech added back exactly for b < 1/2)."""
+        b = self.stick_radius
+        psi_b = math.acos(b)
+        series = chebyshev.chebval(2.0 * psi / psi_b - 1.0, self._slip_chebyshev)
+        if b >= 0.5:
+            return series
+        t = np.cos(psi)
+        return t * (series - kernels.arcsech(t))
 
     def interface_displacement(self, r):
         """u_theta(r, 0+) in f p0 a / mu: 0 on the stick disc, eq. (F7) on the annulus."""
@@ -229,62 +289,49 @@ class FastSolution:
         b = self.stick_radius
         if b == 0.0:  # spinning: unbounded relative rotation
             return np.where(r > 0, math.inf, 0.0)
-        flat = r.ravel()
-        out = np.zeros_like(flat)
-        psi_b = math.acos(b)
-        x_nodes, x_weights = gauss_legendre(_SLIP_PANEL_NODES)
-        all_psi, all_weight, owner = [], [], []
-        for index in np.nonzero(flat > b)[0]:
-            radius = float(flat[index])
-            psi_r = 2.0 * math.asin(math.sqrt(max(0.0, 1.0 - radius) / 2.0))
-            if psi_r == 0.0:
-                psi = 0.5 * psi_b * (x_nodes + 1.0)
-                all_psi.append(psi)
-                all_weight.append(0.5 * psi_b * x_weights * np.cos(psi))
-                owner.append(np.full(psi.size, index))
-                continue
-            # first panel [psi_r, min(2 psi_r, psi_b)]: psi = psi_r cosh(w)
-            top = min(2.0 * psi_r, psi_b)
-            excess = (top - psi_r) / psi_r
-            if excess <= 0.0:  # r = b to rounding: no slip yet
-                continue
-            w_end = math.log1p(excess + math.sqrt(excess * (2.0 + excess)))  # arccosh(top / psi_r)
-            wv = 0.5 * w_end * (x_nodes + 1.0)
-            half = np.sinh(0.5 * wv)
-            psi = psi_r * np.cosh(wv)
-            gap = np.sin(2.0 * psi_r * half * half)  # sin(psi - psi_r)
-            jac = psi_r * 2.0 * half * np.cosh(0.5 * wv) / np.sqrt(gap * np.sin(psi + psi_r))
-            all_psi.append(psi)
-            all_weight.append(0.5 * w_end * x_weights * jac * np.sin(psi) * np.cos(psi))
-            owner.append(np.full(psi.size, index))
-            lo = top
-            while lo < psi_b:
-                hi = min(2.0 * lo, psi_b)
-                psi = 0.5 * (hi - lo) * (x_nodes + 1.0) + lo
-                factor = np.sin(psi) * np.cos(psi) / np.sqrt(np.sin(psi - psi_r) * np.sin(psi + psi_r))
-                all_psi.append(psi)
-                all_weight.append(0.5 * (hi - lo) * x_weights * factor)
-                owner.append(np.full(psi.size, index))
-                lo = hi
-        if all_psi:
-            psi = np.concatenate(all_psi)
-            weight = np.concatenate(all_weight) * self._d_interpolated(psi)
-            idx = np.concatenate(owner)
-            sums = np.bincount(idx, weights=weight, minlength=flat.size)
-            sel = flat > b
-            out[sel] = 2.0 * sums[sel] / (np.pi * flat[sel])
-        return out.reshape(r.shape)
+        return interface.slip_integral(r, b, self._d_interpolated)
 
     def interface_slip(self, r):
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu (docs/conventions.md); 0 for r <= b."""
         return 2.0 * self.interface_displacement(r)
+
+    # -- sigma_rt on the interface (b < 1/2) ---------------------------------------------
+    @cached_property
+    def _correction_chebyshev(self):
+        """Chebyshev coefficients in t on [0, 1] of m(t) = (mixed(t) - E_b(t)) / t (F7).
+
+        m is analytic on [0, 1] (its singularities are at t = 2 - b > 3/2 for b < 1/2):
+        D/t = 2 Omega - arcsech t - E_1(t)/t - m(t), the spinning part being exact (K5).
+        """
+        j = np.arange(CORRECTION_POINTS)
+        t = 0.5 * (np.cos(np.pi * (j + 0.5) / CORRECTION_POINTS) + 1.0)
+        xi, w = self._xi, self._xi_weights
+        p = kernels.abel_kernel(t, self.nodes, xi, w)
+        mixed = (2.0 / np.pi) * p @ (self.weights * self.nodes * self.abel_density)
+        values = (mixed - kernels.load_transform(t, self.stick_radius, xi, w)) / t
+        return _chebyshev_coefficients(values, CORRECTION_POINTS)
+
+    def interface_sigma_rt(self, r):
+        """sigma_rt(r, 0) = u' - u/r in f p0 for b < 1/2, from (F7) without differences:
+
+            sigma_rt = (2/pi) int_(phi_b)^(pi/2) sin^2(phi) [k(x) - x m'(x)] dphi,  x = r sin(phi),
+
+        phi_b = arcsin(b/r) (D(b) = 0 by F3 removes the boundary term), k of
+        ``kernels.spinning_shear_kernel``; the k-part is the spinning (K5) minus its
+        integral over [0, phi_b] (x <= b < 1/2, where k is smooth).  0 on the stick disc
+        and at r = 1.
+        """
+        b = self.stick_radius
+        if not b < 0.5:
+            raise ValueError(f"interface_sigma_rt is for stick discs b < 1/2, got stick_radius={b!r}")
+        return interface.face_shear(r, b, self._correction_chebyshev)
 
     # -- Dini amplitudes ----------------------------------------------------------------
     def abel_transform(self, t):
         """g(t) = int_t^b q(rho) / sqrt(rho^2 - t^2) drho for 0 < t <= b (F2)."""
         t = np.asarray(t, dtype=float)
         b = self.stick_radius
-        big_g = chebyshev.chebval(2.0 * (t / b) ** 2 - 1.0, self._g_chebyshev)
+        big_g = chebyshev.chebval(-2.0 * log_gap(t) / self._log_span - 1.0, self._g_chebyshev)
         root = np.sqrt(np.clip((b - t) * (b + t), 0.0, None))
         return big_g - np.log1p(np.sqrt((1.0 - t) * (1.0 + t))) + np.log(b + root)
 
@@ -312,7 +359,10 @@ class FastSolution:
         w_theta = (half[:, None] * w[None, :]).ravel()
         s = b * np.cos(theta)
         weight = (2.0 / np.pi) * b * np.sin(theta) * w_theta * s * self.abel_transform(s)
-        moments = np.sin(np.outer(lam, s)) @ weight + integrals.load_integral_constant(lam, b)
+        moments = integrals.load_integral_constant(lam, b)
+        block = max(1, _CHUNK_ENTRIES // s.size)  # rows of the (lam, s) matrix at once
+        for start in range(0, lam.size, block):
+            moments[start : start + block] += np.sin(np.outer(lam[start : start + block], s)) @ weight
         return -moments / (lam * integrals.dini_norm(lam))
 
 
@@ -331,6 +381,8 @@ def _limit_solution(b: float) -> FastSolution:
         weights=empty,
         abel_density=empty,
         resolution_estimate=0.0,
+        torque_deficit=GROSS_SLIP_TORQUE - 1.0 if onset else 0.0,
+        _log_span=math.inf if onset else 0.0,
         _xi=empty,
         _xi_weights=empty,
         _g_chebyshev=np.zeros(1),
@@ -356,7 +408,7 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
     Warns
     -----
     ResolutionWarning
-        If the requested or needed nodes exceed ``MAX_NODES`` (b within ~1.5e-6 of 1),
+        If the needed nodes exceed ``MAX_NODES`` (b within ~8e-7 of 1),
         or the Chebyshev tail of G exceeds ``RESOLUTION_TOLERANCE``.
     """
     b = float(stick_radius)
@@ -364,9 +416,14 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
         raise ValueError(f"stick_radius must be a finite number in [0, 1], got {stick_radius!r}")
     if b in (0.0, 1.0):
         return _limit_solution(b)
+    if b < MIN_STICK_RADIUS:
+        raise ValueError(
+            f"stick_radius must be 0 or in [{MIN_STICK_RADIUS:g}, 1] for the Abel-Fredholm solver, got {b!r} "
+            "(smaller stick discs: torsional_contact.asymptotics)"
+        )
     n = default_nodes(b) if n_nodes is None else int(n_nodes)
-    if n < 2:
-        raise ValueError(f"n_nodes must be an integer >= 2, got {n_nodes!r}")
+    if n < 2 or (n_nodes is not None and n > MAX_NODES):
+        raise ValueError(f"n_nodes must be an integer in [2, {MAX_NODES}], got {n_nodes!r}")
     if n > MAX_NODES:
         warnings.warn(
             f"stick_radius={b:.17g} needs {n} Nystrom nodes; capped at {MAX_NODES}: "
@@ -382,12 +439,16 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
     sin_theta = np.sin(theta)
     log_l = np.log1p(np.sqrt((1.0 - t) * (1.0 + t))) - np.log(b) - np.log1p(sin_theta)
 
-    # Chebyshev points of the first kind in x = 2 t^2 / b^2 - 1 for the series of G
-    n_cheb = min(max(n + CHEBYSHEV_EXTRA, _chebyshev_points(b)), 2 * MAX_NODES)
-    x_cheb = np.cos(np.pi * (np.arange(n_cheb) + 0.5) / n_cheb)
-    t_cheb = b * np.sqrt(0.5 * (1.0 + x_cheb))
+    # Chebyshev points of the first kind in Y of (F8) for the series of G
+    span = float(-log_gap(b))  # |ln(1 - b^2)|
+    n_cheb = _chebyshev_points(b)
+    y_cheb = np.cos(np.pi * (np.arange(n_cheb) + 0.5) / n_cheb)
+    t_cheb = np.sqrt(-np.expm1(-0.5 * (y_cheb + 1.0) * span))
     points = np.concatenate([t, [b], t_cheb])
-    a_t = kernels.sinh_excess_scaled(xi, points)
+    # 1 - t without the rounding of t (it sets the kernel near t + s = 2 when b ~ 1)
+    gaps = np.concatenate([(1.0 - b) + 2.0 * b * np.sin(0.5 * theta) ** 2, [1.0 - b],
+                           np.exp(-0.5 * (y_cheb + 1.0) * span) / (1.0 + t_cheb)])
+    a_t = kernels.sinh_excess_scaled(xi, points, gaps)
     y_t = kernels.linear_scaled(xi, points)
     ratio = w_xi * kernels.bessel_ratio_scaled(xi)
     a_s, y_s = a_t[:n], y_t[:n]
@@ -405,11 +466,12 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
     g_b0 = -float(kernels.arcsech(b)) - r_side[n] / b - edge @ g[:, 1]
     omega_big = -g_b0 / g_b1
     density = omega_big * g[:, 0] + g[:, 1]
-    torque = GROSS_SLIP_TORQUE * (1.0 - b**3) + 16.0 / np.pi * np.sum(wt * t * t * density)
+    deficit = GROSS_SLIP_TORQUE * b**3 - 16.0 / np.pi * np.sum(wt * t * t * density)
+    torque = GROSS_SLIP_TORQUE - deficit
     rotation = omega_big - kernels.TORQUE_ROTATION * torque
 
     # G = g + L = 2 Omega - R(t)/t - (2/(pi t)) int_0^b s g P ds (Nystrom interpolant of
-    # F2), sampled at the Chebyshev points and expanded in x = 2 t^2/b^2 - 1
+    # F2), sampled at the Chebyshev points and expanded in Y of (F8)
     mixed = p[n + 1 :] @ (column * density)
     big_g = 2.0 * omega_big - (r_side[n + 1 :] + (2.0 / np.pi) * mixed) / t_cheb
     coefficients = _chebyshev_coefficients(big_g, n_cheb)
@@ -431,6 +493,8 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
         weights=wt,
         abel_density=density,
         resolution_estimate=tail,
+        torque_deficit=float(deficit),
+        _log_span=span,
         _xi=xi,
         _xi_weights=w_xi,
         _g_chebyshev=coefficients,

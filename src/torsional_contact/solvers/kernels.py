@@ -69,6 +69,7 @@ analytic (its singular part is a series in (1 - t)^(k + 1/2)).
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 from numpy.polynomial import chebyshev, legendre
@@ -81,10 +82,13 @@ __all__ = [
     "integral_x_i1_scaled",
     "abel_kernel",
     "sinh_excess_scaled",
+    "sinh_excess_slope",
     "linear_scaled",
     "load_transform",
     "load_profiles",
     "spinning_transform",
+    "spinning_shear",
+    "spinning_shear_kernel",
     "torque_transform",
     "halfspace_kernel",
     "cylinder_kernel",
@@ -234,13 +238,18 @@ def integral_x_i1_scaled(x):
     return out
 
 
-def sinh_excess_scaled(xi, t):
-    """exp(-xi) (sinh(xi t) - xi t), shape (len(t), len(xi)); series for xi t < 1/2."""
+def sinh_excess_scaled(xi, t, gap=None):
+    """exp(-xi) (sinh(xi t) - xi t), shape (len(t), len(xi)); series for xi t < 1/2.
+
+    ``gap``: 1 - t if known more accurately than from t (t within ~1e-6 of 1, where
+    exp(-xi (1 - t)) at xi ~ 1 / (1 - t) would inherit the rounding of t, 1e-16 / (1 - t)).
+    """
     t = np.asarray(t, dtype=float)[:, None]
     xi = np.asarray(xi, dtype=float)[None, :]
     x = xi * t
     decay = np.exp(-xi)
-    near = np.exp(-xi * (1.0 - t))
+    gap = 1.0 - t if gap is None else np.asarray(gap, dtype=float)[:, None]
+    near = np.exp(-xi * gap)
     out = 0.5 * (near - near * np.exp(-2.0 * x)) - x * decay
     small = x < 0.5
     if np.any(small):
@@ -253,6 +262,32 @@ def sinh_excess_scaled(xi, t):
             series = series + term
         out[small] = series * np.broadcast_to(decay, x.shape)[small]
     return out
+
+
+#: Taylor coefficients of (sinh x - x cosh x) / x^3 = -sum_k 2k x^(2k-2) / (2k+1)!, k = 1..9.
+_SLOPE_SERIES = np.array([-2.0 * k / math.factorial(2 * k + 1) for k in range(1, 10)])
+
+
+def sinh_excess_slope(xi, t, gap=None):
+    """-(d/dt)[A_t / t] = xi^2 exp(-xi) (sinh(xi t) - xi t cosh(xi t)) / (xi t)^2, shape (len(t), len(xi)).
+
+    A_t = ``sinh_excess_scaled``; its linear part xi t / t is constant in t.  Taylor
+    series (x^3 Horner form, 9 terms) for x = xi t < 1/2, where the difference cancels;
+    ``gap`` as for ``sinh_excess_scaled``.
+    """
+    t = np.asarray(t, dtype=float)[:, None]
+    xi = np.asarray(xi, dtype=float)[None, :]
+    x = xi * t
+    gap = 1.0 - t if gap is None else np.asarray(gap, dtype=float)[:, None]
+    near, far = np.exp(-xi * gap), np.exp(-xi * (1.0 + t))
+    big = x >= 0.5
+    xb = np.where(big, x, 1.0)
+    direct = xi * xi * (0.5 * ((1.0 - xb) * near - (1.0 + xb) * far)) / (xb * xb)
+    x2 = x * x
+    series = np.zeros_like(x)
+    for coefficient in _SLOPE_SERIES[::-1]:
+        series = series * x2 + coefficient
+    return np.where(big, direct, xi * xi * np.exp(-xi) * x * series)
 
 
 def linear_scaled(xi, t):
@@ -355,6 +390,21 @@ def _spinning_chebyshev():
     return coefficients
 
 
+def spinning_shear_kernel(t):
+    """k(t) = 1/sqrt(1 - t^2) - t e'(t), e = E_1(t)/t, for 0 <= t <= 0.9 (sigma_rt of F7).
+
+    sigma_rt(r, 0) of the load D(t) = -t arcsech t - E_1(t) (traction 1) is
+    (2/pi) int_0^(pi/2) sin^2(phi) k(r sin phi) dphi; e' from the derivative of the
+    Chebyshev table of ``spinning_transform`` (~1e-13 for t <= 0.9; near t = 1 the two
+    terms cancel and ``spinning_shear`` (K5) must be used instead).
+    """
+    t = np.asarray(t, dtype=float)
+    root = np.sqrt((1.0 - t) * (1.0 + t))
+    x = np.arccos(np.clip(t, 0.0, 1.0)) / (np.pi / 4.0) - 1.0
+    e_psi = chebyshev.chebval(x, chebyshev.chebder(_spinning_chebyshev())) / (np.pi / 4.0)
+    return (1.0 + t * e_psi) / root  # e'(t) = -e_psi / sqrt(1 - t^2)
+
+
 def spinning_transform(t):
     """E_1(t) = int_0^1 M(t, rho) rho drho for 0 <= t <= 1 (response to traction 1).
 
@@ -364,6 +414,62 @@ def spinning_transform(t):
     t = np.asarray(t, dtype=float)
     x = np.arccos(np.clip(t, 0.0, 1.0)) / (np.pi / 4.0) - 1.0
     return t * chebyshev.chebval(x, _spinning_chebyshev())
+
+
+def _ive2(x):
+    """exp(-x) I2(x), asymptotic series above 1e4 (as ``_ive0``)."""
+    x = np.asarray(x, dtype=float)
+    big = x > _ASYMPTOTIC
+    xb = np.where(big, x, 1.0)
+    asym = _asymptotic_sum(xb, _A2, -1.0) / np.sqrt(2.0 * np.pi * xb)
+    return np.where(big, asym, special.ive(2, np.where(big, 1.0, x)))
+
+
+def _halfspace_shear(m):
+    """(2/pi) (K(m) - E(m)) / m, m = r^2 in [0, 1): power series below m = 1/2."""
+    m = np.asarray(m, dtype=float)
+    out = np.empty_like(m)
+    small = m < 0.5
+    ms = m[small]
+    coefficient, total, power = 0.25, np.zeros_like(ms), np.ones_like(ms)
+    for n in range(1, 60):  # (K - E)/m = (pi/2) sum_n a_n^2 (2n/(2n - 1)) m^(n-1), a_n = (2n)!/(4^n n!^2)
+        total = total + coefficient * (2.0 * n / (2.0 * n - 1.0)) * power
+        coefficient *= ((2.0 * n + 1.0) / (2.0 * n + 2.0)) ** 2
+        power = power * ms
+    out[small] = total
+    ml = m[~small]
+    out[~small] = (special.ellipkm1(1.0 - ml) - special.ellipe(ml)) / (np.pi / 2.0 * ml)
+    return out
+
+
+def spinning_shear(r):
+    """sigma_rt(r, 0+) / (f p0) under traction 1 on the whole face (spinning), 0 <= r < 1.
+
+    With u(r, 0) = omega r + v(r) and sigma_rt = u' - u/r (the rigid rotation drops out),
+    the Neumann-to-Dirichlet map (K1)-(K4) with (d/dr - 1/r) J1(k r) = -k J2(k r) and
+    (d/dr - 1/r) I1(xi r) = xi I2(xi r) gives a half-space part (Abel form of F7 with
+    D = -t arcsech t: (2/pi) int_0^(pi/2) sin^2 phi / sqrt(1 - r^2 sin^2 phi) dphi) and
+    the side correction of (K3):
+
+        sigma_rt(r, 0) = (2/pi) (K(r^2) - E(r^2)) / r^2
+                         - (2/pi) int_0^inf [I2(xi r) / I2(xi)] K2(xi) F(xi) / xi dxi.     (K5)
+
+    Both terms grow like ln(1/(1 - r)) towards the corner and the logarithms cancel
+    (sigma_rt -> 0 at the free side r = 1); sigma_rt -> 1/2 as r -> 0+ (the uniform
+    circumferential traction winds around the axis: u ~ (r ln r)/2).  Checked against
+    the Dini series (eq. 24) at small z in the tests.
+    """
+    r = np.asarray(r, dtype=float)
+    flat = r.ravel()
+    out = np.zeros_like(flat)
+    inside = (flat > 0.0) & (flat < 1.0)
+    x = flat[inside]
+    if x.size:
+        xi, w = xi_grid(float(1.0 - np.max(x)))
+        scaled = _ive2(np.outer(x, xi)) * np.exp(-np.outer(1.0 - x, xi))  # I2(xi r) exp(-xi)
+        profile = w * bessel_ratio_scaled(xi) * integral_x_i1_scaled(xi) / xi  # exp(2 xi) K2/I2 * exp(-xi) F / xi
+        out[inside] = _halfspace_shear(x * x) - (2.0 / np.pi) * (scaled @ profile)
+    return out.reshape(r.shape)
 
 
 def arcsech(s):

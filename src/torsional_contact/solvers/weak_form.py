@@ -90,9 +90,22 @@ from ..special import integrals
 from ..special.zeros import bessel_j2_zeros
 from .equilibration import equilibrated_solve
 
-__all__ = ["METHODS", "SeriesSolution", "solve_series", "assemble", "resolution_limit"]
+__all__ = [
+    "METHODS",
+    "MAX_SERIES_TERMS",
+    "SeriesSolution",
+    "solve_series",
+    "assemble",
+    "resolution_limit",
+    "terms_to_resolve",
+    "minimum_inverse_terms",
+]
 
 METHODS = ("published", "complete")
+
+#: Largest N accepted: the dense (N+1)^2 system and its equilibrated copy take ~16 N^2
+#: bytes (1.6 GB at N = 10000) and the solve ~N^3/3 flops (about a minute on 2 cores).
+MAX_SERIES_TERMS = 10_000
 
 #: Smallest number of highest-term wavelengths (lam_N * width) that must fit across
 #: the stick disc and across the slip annulus before we stop warning.
@@ -146,6 +159,24 @@ def resolution_limit(n_terms: int) -> tuple[float, float]:
     """
     width = RESOLUTION_WAVELENGTHS / bessel_j2_zeros(n_terms)[-1]
     return width, 1.0 - width
+
+
+def terms_to_resolve(width: float) -> int:
+    """Smallest N whose highest term fits ``RESOLUTION_WAVELENGTHS`` wavelengths into ``width`` (0 < width <= 1).
+
+    lam_N >= RESOLUTION_WAVELENGTHS / width with the zeros of J2, lam_N ~ pi (N + 3/4).
+    """
+    n = max(1, math.ceil(RESOLUTION_WAVELENGTHS / (math.pi * width) - 0.75))
+    if n > 10 * MAX_SERIES_TERMS:  # far beyond what can be solved: the estimate says enough
+        return n
+    while bessel_j2_zeros(n)[-1] < RESOLUTION_WAVELENGTHS / width:
+        n += 1
+    return n
+
+
+def minimum_inverse_terms() -> int:
+    """Smallest N for which some stick radius is resolved (stick disc and annulus both >= 10 / lam_N)."""
+    return terms_to_resolve(0.5)
 
 
 def assemble(method: str, lam: np.ndarray, b: float):
@@ -214,13 +245,13 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
         omega = math.nan if method == "published" else 0.0
         return SeriesSolution(method, 1.0, 1.0, omega, lam, np.zeros(lam.size), 1.0)
     b_min, b_max = resolution_limit(n_terms)
-    if b < b_min or (b > b_max and b < 1.0):
-        needed = math.ceil(RESOLUTION_WAVELENGTHS / (math.pi * min(b, 1.0 - b)))
+    if b < b_min or b > b_max:
+        needed = terms_to_resolve(min(b, 1.0 - b))
         warnings.warn(
             f"stick_radius={b:.6g} is not resolved by n_terms={n_terms}: the "
             f"{'stick disc' if b < 0.5 else 'slip annulus'} is narrower than "
             f"{RESOLUTION_WAVELENGTHS:g} wavelengths of the highest term; T* and the "
-            f"fields near r = b may be off in their leading digits (use n_terms >= {needed}).",
+            f"fields near r = b may be off in their leading digits (use n_terms >= {float(needed):.6g}).",
             ResolutionWarning,
             stacklevel=3,
         )
@@ -241,11 +272,12 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
     torque = (1.0 + weight @ x_constant[:n]) / (b - weight @ x_torque[:n])
     coeffs = x_constant + torque * x_torque
     omega = float(coeffs[n]) if method == "complete" else math.nan
-    if method == "published" and torque > GROSS_SLIP_TORQUE:
+    if not 1.0 <= torque <= GROSS_SLIP_TORQUE or not math.isfinite(torque):
+        cause = ("a consequence of the missing rigid-rotation mode (see the errata)" if method == "published"
+                 else f"n_terms={n_terms} does not resolve stick_radius={b:.6g}")
         warnings.warn(
-            f"the published formulation gives T* = {torque:.6g} > 4/3 at stick_radius={b:.6g}: "
-            "physically impossible (torque above spinning); a consequence of the missing "
-            "rigid-rotation mode (see the errata)",
+            f"the {method} formulation gives T* = {torque:.6g} at stick_radius={b:.6g}, outside [1, 4/3] "
+            f"(partial slip): physically impossible; {cause}",
             UnphysicalResultWarning,
             stacklevel=3,
         )

@@ -48,9 +48,10 @@ from dataclasses import dataclass, field
 import mpmath
 
 from .. import validation
-from ..diagnostics import IllConditioningWarning
+from ..criteria import GROSS_SLIP_TORQUE
+from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
 from ..provenance import write_json
-from ..solvers.weak_form import METHODS
+from ..solvers.weak_form import METHODS, resolution_limit, terms_to_resolve
 from .arbitrary_precision import backend as default_backend
 from .arbitrary_precision import parse_stick_radius, solve_linear
 from .weak_form_mp import assemble, j2_zeros
@@ -166,6 +167,11 @@ def solve_reference(
 
     Warns
     -----
+    ResolutionWarning
+        If the stick disc or the slip annulus is narrower than 10 wavelengths of the
+        highest term (the rule of ``solvers.weak_form``): precision does not help there.
+    UnphysicalResultWarning
+        If T* falls outside [1, 4/3].
     IllConditioningWarning
         If the rigorous bound of the flint solve leaves fewer than ``digits`` digits.
     """
@@ -179,6 +185,17 @@ def solve_reference(
         b = parse_stick_radius(b_in)
         if b == 0 or b == 1:
             raise ValueError(f"stick_radius must lie in (0, 1) for the reference solve, got {b_in!r}")
+        b_min, b_max = resolution_limit(n_terms)
+        narrow = min(b, 1 - b)
+        if not b_min <= b <= b_max:
+            warnings.warn(
+                f"stick_radius={b_in!r} is not resolved by n_terms={n_terms}: the "
+                f"{'stick disc' if b < 0.5 else 'slip annulus'} is narrower than 10 wavelengths of the highest "
+                f"term; T* and omega are the truncated system's to {digits} digits, far from the "
+                f"problem's (use n_terms >= {float(terms_to_resolve(max(float(narrow), 1e-300))):.6g})",
+                ResolutionWarning,
+                stacklevel=2,
+            )
         t0 = time.perf_counter()
         lam = j2_zeros(n_terms, work)
         seconds["zeros"] = time.perf_counter() - t0
@@ -193,10 +210,18 @@ def solve_reference(
         wl = mpmath.fsum(w * c for w, c in zip(weight, x_torque, strict=False))
         torque = (1 + wk) / (b - wl)
         coeffs = [k + torque * t for k, t in zip(x_constant, x_torque, strict=False)]
+    if not 1 <= torque <= GROSS_SLIP_TORQUE or not mpmath.isfinite(torque):
+        warnings.warn(
+            f"the {method} system at n_terms={n_terms} gives T* = {mpmath.nstr(torque, 8)} at stick_radius={b_in!r}, "
+            "outside [1, 4/3] (partial slip): physically impossible",
+            UnphysicalResultWarning,
+            stacklevel=2,
+        )
     if bound is not None and bound > 0 and -mpmath.log10(bound) < digits:
         warnings.warn(
             f"the reference solve for stick_radius={b_in!r}, n_terms={n_terms} keeps only "
-            f"{float(-mpmath.log10(bound)):.1f} of {digits} requested digits; raise digits",
+            f"{float(-mpmath.log10(bound)):.1f} of {digits} requested digits (rigorous bound of the solve): only "
+            "those are significant (the command line prints only those)",
             IllConditioningWarning,
             stacklevel=2,
         )
