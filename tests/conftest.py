@@ -9,3 +9,11 @@ def _restore_mpmath_precision():
     saved = mpmath.mp.prec
     yield
     mpmath.mp.prec = saved
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items):
+    """The tests that need the whole errata table (about a minute to compute) belong to the slow tier."""
+    for item in items:
+        if item.module.__name__.endswith("test_errata") and "table" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.slow)

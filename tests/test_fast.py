@@ -45,6 +45,7 @@ def _graded(a, b, toward, n=24, levels=30):
 # -- kernels --------------------------------------------------------------------------
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 def test_torque_rotation_constant_mpmath():
     mpmath.mp.dps = 25
     f = lambda x: mpmath.besselk(2, x) * (1 - x**2 / (8 * mpmath.besseli(2, x)))  # noqa: E731
@@ -137,6 +138,7 @@ def test_geometric_convergence_in_nodes():
     assert all(e1 < e0 / 5 for e0, e1 in zip(errors, errors[1:], strict=False))
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 def test_agrees_with_extrapolated_weak_form():
     """T_N = T + (a + c ln N)/N fitted to the complete weak form at N = 1000..4000."""
     b = 0.6
@@ -267,6 +269,7 @@ def test_bad_input():
             solve_fast(bad)
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 @pytest.mark.parametrize(("b", "n_basis"), [(0.3, 8), (0.6, 10)])
 def test_agrees_with_direct_collocation(b, n_basis):
     """A second method: first-kind collocation of u = 0 on the stick disc (``verification.collocation``)."""

@@ -79,6 +79,7 @@ def test_stick_onset_and_spinning_limits():
     assert 4 / 3 - near_zero[1] < 2e-5
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 def test_torque_decreases_with_stick_radius():
     radii = np.linspace(0.02, 0.98, 49)
     with warnings.catch_warnings():

@@ -17,6 +17,7 @@ from torsional_contact.solvers.weak_form import solve_series
 CONVERGED = {0.6: 1.2317268745666}  # fast method; checked against the direct method in test_fast
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 @pytest.mark.parametrize("method", ["complete", "published"])
 def test_five_thousand_terms_no_nan_and_well_conditioned(method):
     with warnings.catch_warnings():

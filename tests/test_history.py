@@ -270,6 +270,7 @@ def test_turning_point_extraction():
 # ``frictional_work``); against the closed form W(A) = 8 pi int s_m r dr the measured relative
 # differences at 40 points per slipping stretch are 2.7e-5 (+-1.2), 8.8e-5 (+-1.3) and 3.8e-4
 # (-0.9 .. 1.25, narrow annulus: series error).
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 @pytest.mark.parametrize("t_min, t_max", [(-1.2, 1.2), (-0.9, 1.25), (-1.3, 1.3)])
 def test_energy_balance_weak_form(t_min, t_max):
     loop = H.hysteresis_loop(t_min, t_max, n_points=40, **WEAK)

@@ -103,6 +103,7 @@ def test_solution_independent_of_precision_backend_and_form(method):
     assert arbitrary_precision.flint is None or arbitrary_precision.flint.ctx.prec == flint_prec
 
 
+@pytest.mark.slow  # long: the CI tier (workflow/test.sh) runs it
 def test_regularity_condition_and_stick_condition_hold():
     """(v): the traction series equals 1 at r = b; the stick equation holds in the weak sense."""
     sol = reference.solve_reference("0.5", "complete", 30, 40)
