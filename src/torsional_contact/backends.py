@@ -68,12 +68,8 @@ class Bilateral:
         return {}
 
 
-@dataclass(frozen=True)
-class Series:
-    """The truncated weak form (published or complete) at N terms: sums of eqs. (25), (26)."""
-
-    solution: SeriesSolution
-    dini_is_truncation = False
+class _Scalars:
+    """stick_radius, torque and rigid_rotation read off the wrapped solver result ``solution``."""
 
     @property
     def stick_radius(self) -> float:
@@ -82,6 +78,18 @@ class Series:
     @property
     def torque(self) -> float:
         return self.solution.torque
+
+    @property
+    def rigid_rotation(self) -> float:
+        return self.solution.rigid_rotation
+
+
+@dataclass(frozen=True)
+class Series(_Scalars):
+    """The truncated weak form (published or complete) at N terms: sums of eqs. (25), (26)."""
+
+    solution: SeriesSolution
+    dini_is_truncation = False
 
     @property
     def rigid_rotation(self) -> float:
@@ -112,7 +120,7 @@ class Series:
 
 
 @dataclass(frozen=True)
-class AbelFredholm:
+class AbelFredholm(_Scalars):
     """The Abel-Fredholm solution (``solvers.abel_fredholm``): exact interface values, Dini fields off it.
 
     The Dini amplitudes for z > 0 are computed from the method's traction with as many
@@ -124,18 +132,6 @@ class AbelFredholm:
     n_terms: int | None = None
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
     dini_is_truncation = True
-
-    @property
-    def stick_radius(self) -> float:
-        return self.solution.stick_radius
-
-    @property
-    def torque(self) -> float:
-        return self.solution.torque
-
-    @property
-    def rigid_rotation(self) -> float:
-        return self.solution.rigid_rotation
 
     def traction(self, r):
         return self.solution.interface_traction(r)

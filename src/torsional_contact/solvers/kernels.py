@@ -157,13 +157,18 @@ _A0 = _hankel_coefficients(0)
 _A2 = _hankel_coefficients(2)
 
 
-def _ive0(x):
-    """exp(-x) I0(x), asymptotic series above 1e4 (scipy gives nan beyond ~1e9)."""
+def _ive(order, x):
+    """exp(-x) I_order(x) (order 0 or 2), asymptotic series above 1e4 (scipy gives nan beyond ~1e9)."""
     x = np.asarray(x, dtype=float)
     big = x > _ASYMPTOTIC
     xb = np.where(big, x, 1.0)
-    asym = _asymptotic_sum(xb, _A0, -1.0) / np.sqrt(2.0 * np.pi * xb)
-    return np.where(big, asym, special.ive(0, np.where(big, 1.0, x)))
+    asym = _asymptotic_sum(xb, _A0 if order == 0 else _A2, -1.0) / np.sqrt(2.0 * np.pi * xb)
+    return np.where(big, asym, special.ive(order, np.where(big, 1.0, x)))
+
+
+def _ive0(x):
+    """exp(-x) I0(x) (``_ive``)."""
+    return _ive(0, x)
 
 
 def bessel_ratio_scaled(xi):
@@ -417,12 +422,8 @@ def spinning_transform(t):
 
 
 def _ive2(x):
-    """exp(-x) I2(x), asymptotic series above 1e4 (as ``_ive0``)."""
-    x = np.asarray(x, dtype=float)
-    big = x > _ASYMPTOTIC
-    xb = np.where(big, x, 1.0)
-    asym = _asymptotic_sum(xb, _A2, -1.0) / np.sqrt(2.0 * np.pi * xb)
-    return np.where(big, asym, special.ive(2, np.where(big, 1.0, x)))
+    """exp(-x) I2(x) (``_ive``)."""
+    return _ive(2, x)
 
 
 def _halfspace_shear(m):
