@@ -236,3 +236,23 @@ def test_cli_reference_bad_input(args, capsys):
     out = capsys.readouterr()
     assert out.out == ""
     assert len(out.err.strip().splitlines()) == 1
+
+
+def test_the_reference_runs_without_python_flint():
+    """python-flint is optional everywhere: without it the dense solve falls back to mpmath, same digits."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['flint'] = None\n"  # import flint now raises ImportError
+        "from torsional_contact.verification import arbitrary_precision, reference\n"
+        "assert not arbitrary_precision.FLINT and arbitrary_precision.backend() == 'mpmath'\n"
+        "s = reference.solve_reference('0.6', 'complete', 12, 25)\n"
+        "import mpmath; print(s.backend, mpmath.nstr(s.torque, 25))\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    backend, torque = run.stdout.split()
+    with_flint = reference.solve_reference("0.6", "complete", 12, 25)
+    assert backend == "mpmath"
+    with mpmath.workdps(30):
+        assert abs(mpmath.mpf(torque) - with_flint.torque) < mpmath.mpf(10) ** -22
