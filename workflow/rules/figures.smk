@@ -199,5 +199,23 @@ rule fig_convergence:
         " > {log} 2>&1"
 
 
+rule fig_precision_ladder:
+    input:
+        script="workflow/scripts/fig_precision_ladder.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_precision_ladder.py"),
+        data=f"{OUT}/verification/precision_ladder.json",
+    output:
+        **fig("precision_ladder", "precision_ladder"),
+    log:
+        logfile("precision_ladder_figure"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"
+
+
 WILDCARDS["fig2_contours"] = {"quantity": config["contours"]["quantities"]}
 WILDCARDS["fig4_interface"] = {"quantity": config["interface"]["quantities"]}

@@ -120,3 +120,85 @@ rule fem_validation:
     shell:
         "python {input.script} --stick-radii {params.radii} --mesh-levels {params.levels}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
+PRECISION = config["precision"]
+PRECISION_RADII = [f"{b:g}" for b in PRECISION["stick_radii"]]
+CONVERGENCE_NODES = {f"{row['stick_radius']:g}": row["nodes"] for row in PRECISION["convergence"]}
+
+
+def convergence_options(wildcards):
+    """The node sweep of one reference radius, if the configuration asks for one."""
+    nodes = CONVERGENCE_NODES.get(wildcards.radius)
+    if not nodes:
+        return ""
+    digits = " ".join(str(d) for d in PRECISION["convergence_digits"])
+    return f"--convergence-nodes {' '.join(str(n) for n in nodes)} --convergence-digits {digits}"
+
+
+rule reference_abel_fredholm:
+    input:
+        script="workflow/scripts/reference_abel_fredholm.py",
+        lib=lib("workflow/scripts/reference_abel_fredholm.py"),
+    output:
+        json=f"{OUT}/verification/abel_fredholm/b{{radius}}.json",
+        timing=f"{OUT}/timings/abel_fredholm/b{{radius}}.json",
+    params:
+        digits=PRECISION["digits"],
+        convergence=convergence_options,
+    log:
+        logfile("abel_fredholm_b{radius}"),
+    wildcard_constraints:
+        radius=r"0\.\d+",
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --stick-radius {wildcards.radius} --digits {params.digits} {params.convergence}"
+        " --json {output.json} --timing {output.timing} > {log} 2>&1"
+
+
+rule precision_ladder:
+    input:
+        script="workflow/scripts/precision_ladder.py",
+        lib=lib("workflow/scripts/precision_ladder.py"),
+        references=expand(f"{OUT}/verification/abel_fredholm/b{{radius}}.json", radius=PRECISION_RADII),
+    output:
+        json=f"{OUT}/verification/precision_ladder.json",
+        tex=f"{OUT}/tables/precision_ladder.tex",
+        weak=f"{OUT}/tables/weak_form_errors.tex",
+        macros=f"{OUT}/macros/precision_ladder.tex",
+    params:
+        weak_radii=PRECISION["weak_radii"],
+        weak_n=PRECISION["weak_n_terms"],
+        weak_digits=PRECISION["weak_digits"],
+        main=PRECISION["main_radius"],
+    log:
+        logfile("precision_ladder"),
+    resources:
+        runtime=20,
+        mem_mb=3000,
+    shell:
+        "python {input.script} --references {input.references} --weak-radii {params.weak_radii}"
+        " --weak-n-terms {params.weak_n} --weak-digits {params.weak_digits} --main-radius {params.main}"
+        " --json {output.json} --tex {output.tex} --tex-weak {output.weak} --macros {output.macros} > {log} 2>&1"
+
+
+rule precision_timing:
+    input:
+        script="workflow/scripts/timing_macros.py",
+        lib=lib("workflow/scripts/timing_macros.py"),
+        timings=expand(f"{OUT}/timings/abel_fredholm/b{{radius}}.json", radius=PRECISION_RADII),
+    output:
+        macros=f"{OUT}/macros/precision_timing.tex",
+    log:
+        logfile("precision_timing"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --timings {input.timings} --key ladder-max-ref-seconds --statistic max"
+        " --field seconds --macros {output.macros} > {log} 2>&1"
+
+
+WILDCARDS["reference_abel_fredholm"] = {"radius": PRECISION_RADII}

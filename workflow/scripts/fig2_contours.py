@@ -8,7 +8,7 @@ truncated at the plot tolerance (default 1e-4 of f p0).
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, method_label, plt, save_figure, use_style
 
 LABELS = {
     "sigma_zt": r"$\sigma_{\theta z}/f p_0$",
@@ -50,7 +50,7 @@ def main():
     ax.set_xlabel(r"$r/a$")
     ax.set_ylabel(r"$z/a$")
     ax.set_title(f"{LABELS[a.quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$\n"
-                 f"({s.method} method" + ("" if s.n_terms is None else f", N = {s.n_terms}") + ")")
+                 f"({method_label(s)})")
     fig.colorbar(filled, ax=ax, label=LABELS[a.quantity])
     ax.grid(False)
     save_figure(fig, a.pdf, a.png)

@@ -5,7 +5,7 @@
 import numpy as np
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+from torsional_contact.io.plotting import figure_parser, method_label, plt, save_figure, use_style
 
 LABELS = {
     "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",
@@ -40,7 +40,7 @@ def main():
     ax.set_xlabel(r"$r/a$")
     ax.set_ylabel(LABELS[a.quantity])
     ax.set_xlim(0, 1)
-    ax.legend(title=s.method if s.n_terms is None else f"{s.method}, N = {s.n_terms}")
+    ax.legend(title=method_label(s))
     save_figure(fig, a.pdf, a.png)
 
 

@@ -25,7 +25,8 @@ from .. import __version__
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
 
-__all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS"]
+__all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS",
+           "REFERENCE_METHODS"]
 
 PROG = "torsional_contact"
 
@@ -128,16 +129,46 @@ def _decimal_radius(name: str, text: str) -> str:
     return text.strip()
 
 
+#: The methods of ``reference``: the weak forms (truncated) and "fast", the converged solution.
+REFERENCE_METHODS = (*SERIES_METHODS, "fast")
+
+
+def _cmd_reference_fast(args) -> dict:
+    """``reference --method fast``: the converged solution (Abel-Fredholm method in arbitrary precision)."""
+    from ..verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm
+    from ..verification.arbitrary_precision import parse_decimal, require_flint
+
+    if args.n_terms is not None:
+        raise UsageError("--n-terms is not accepted with --method fast (the converged solution has no truncation)")
+    if not 1 <= args.digits <= MAX_DIGITS:
+        raise UsageError(f"--digits must lie in [1, {MAX_DIGITS}] with --method fast, got {args.digits}")
+    text = _decimal_radius("--stick-radius", args.stick_radius)
+    for r in args.radii or ():
+        parse_decimal("--radii", r, 0, 1)
+    try:
+        require_flint("reference --method fast")
+    except ImportError as error:
+        raise UsageError(str(error)) from None
+    record = solve_reference_abel_fredholm(text, args.digits).as_dict(args.radii)
+    record.update(stick_radius=text, n_terms=None, backend="flint")
+    return record
+
+
 def _cmd_reference(args) -> dict:
     import mpmath
 
     from .. import validation
     from ..verification.reference import solve_reference
 
+    method = validation.choice("--method", args.method, REFERENCE_METHODS)
+    if method == "fast":
+        return _cmd_reference_fast(args)
+    if args.radii is not None:
+        raise UsageError("--radii is only available with --method fast")
     text = _decimal_radius("--stick-radius", args.stick_radius)
     digits = validation.positive_int("--digits", args.digits, MAX_REFERENCE_DIGITS)
-    n_terms = validation.positive_int("--n-terms", args.n_terms, MAX_REFERENCE_TERMS)
-    method = validation.choice("--method", args.method, SERIES_METHODS)
+    n_terms = validation.positive_int("--n-terms", 145 if args.n_terms is None else args.n_terms,
+                                      MAX_REFERENCE_TERMS)
     solution = solve_reference(text, method, n_terms, digits)
     kept = digits
     if solution.solve_bound is not None and solution.solve_bound > 0:  # print only the digits the bound keeps
@@ -164,18 +195,6 @@ def _cmd_errata(args) -> list:
     return errata_table()
 
 
-#: A negative number as argparse should read it: -1, -.5, -1e0, -1.5E-3, -inf, -nan (case-insensitive).
-_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*(e[-+]?\d+)?|\.\d+(e[-+]?\d+)?|inf(inity)?|nan)$", re.IGNORECASE)
-
-
-def _accept_negative_numbers(parser) -> None:
-    """Let ``parser`` read "-1e0" or "-inf" as values, not options (argparse knows only -1 and -1.5).
-
-    Safe for a parser none of whose options looks like a negative number.
-    """
-    parser._negative_number_matcher = _NEGATIVE_NUMBER
-
-
 def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
     p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
@@ -196,22 +215,24 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
     p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
-    _accept_negative_numbers(p)
     source = p.add_mutually_exclusive_group(required=True)
-    source.add_argument("--turning-points", type=float, nargs="+", help="T* after each step, in [-4/3, 4/3]")
+    source.add_argument("--turning-points", type=real_argument, nargs="+", help="T* after each step, in [-4/3, 4/3]")
     source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line, or a .npy array")
     p.add_argument("--output", help="with --signal: CSV of the twist and dissipated energy at every sample")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
     p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")
     p.set_defaults(handler=_cmd_history)
-    p = sub.add_parser("reference", help="high-precision (mpmath) solution of the truncated system")
+    p = sub.add_parser("reference", help="high-precision solution: the truncated weak form, or (--method fast) "
+                       "the converged Abel-Fredholm solution")
     p.add_argument("--stick-radius", required=True, help="b/a in (0, 1), read as a decimal")
-    p.add_argument("--n-terms", type=int, default=145,
-                   help=f"number of eigenfunctions, 1 to {MAX_REFERENCE_TERMS} (default 145)")
+    p.add_argument("--n-terms", type=int, default=None,
+                   help=f"weak forms: number of eigenfunctions, 1 to {MAX_REFERENCE_TERMS} (default 145)")
     p.add_argument("--digits", type=int, default=50,
-                   help=f"significant digits, 1 to {MAX_REFERENCE_DIGITS} (default 50; fewer if the solve keeps fewer)")
-    p.add_argument("--method", default="complete", help=f"one of {', '.join(SERIES_METHODS)} (default complete)")
+                   help=f"significant digits, 1 to {MAX_REFERENCE_DIGITS} (default 50; fewer if the solve keeps fewer; "
+                   "fast: at most 100)")
+    p.add_argument("--method", default="complete", help=f"one of {', '.join(REFERENCE_METHODS)} (default complete)")
+    p.add_argument("--radii", nargs="+", help="fast only: also the traction and slip at these r/a (decimals in [0, 1])")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_reference)
     p = sub.add_parser("errata", help="computed verdicts on the paper's equations and statements")

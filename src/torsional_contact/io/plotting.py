@@ -14,7 +14,7 @@ import matplotlib.pyplot as plt
 
 from ..provenance import atomic_path
 
-__all__ = ["use_style", "save_figure", "figure_parser", "load_data", "plt"]
+__all__ = ["use_style", "save_figure", "figure_parser", "load_data", "method_label", "plt"]
 
 
 def use_style(style_path=None) -> None:
@@ -48,3 +48,13 @@ def load_data(path) -> dict:
     """The JSON a data rule wrote."""
     with open(path, encoding="utf-8") as handle:
         return json.load(handle)
+
+
+#: How figures name the methods (the manuscript's names, not the API's ``method=`` values).
+METHOD_LABELS = {"fast": "Abel-Fredholm", "complete": "complete weak form", "published": "printed eq. (38)"}
+
+
+def method_label(solution) -> str:
+    """The method of a ``Solution`` as figures name it, with N for the weak forms."""
+    name = METHOD_LABELS.get(solution.method, solution.method)
+    return name if solution.method == "fast" or solution.n_terms is None else f"{name}, N = {solution.n_terms}"

@@ -70,7 +70,7 @@ class Nodes:
                     lam_arb = ap.mp_to_arb(lam)
                     if self._arb_nodes is None:
                         self._arb_nodes = [ap.mp_to_arb(r) for r in self.nodes]
-                    self._j1[key] = [ap.arb_to_mp((lam_arb * r).bessel_j(1))[0] for r in self._arb_nodes]
+                    self._j1[key] = [ap.arb_to_mp((lam_arb * r).bessel_j(1)) for r in self._arb_nodes]
         return self._j1[key]
 
     def integral(self, values):

@@ -53,7 +53,7 @@ from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalR
 from ..provenance import write_json
 from ..solvers.weak_form import METHODS, resolution_limit, terms_to_resolve
 from .arbitrary_precision import backend as default_backend
-from .arbitrary_precision import parse_stick_radius, solve_linear
+from .arbitrary_precision import parse_decimal, solve_linear
 from .weak_form_mp import assemble, j2_zeros
 
 __all__ = [
@@ -154,7 +154,7 @@ def solve_reference(
     Parameters
     ----------
     stick_radius : float or str
-        b/a in (0, 1); a float is read as its decimal repr (see ``parse_stick_radius``).
+        b/a in (0, 1), read as an exact decimal (a float as its shortest repr; ``arbitrary_precision.parse_decimal``).
     method : {"published", "complete"}
     n_terms : int
     digits : int
@@ -182,9 +182,7 @@ def solve_reference(
     work = digits + GUARD_DIGITS
     seconds = {}
     with mpmath.workdps(work):
-        b = parse_stick_radius(b_in)
-        if b == 0 or b == 1:
-            raise ValueError(f"stick_radius must lie in (0, 1) for the reference solve, got {b_in!r}")
+        b = parse_decimal("stick_radius", b_in, 0, 1, closed=False)  # partial slip only
         b_min, b_max = resolution_limit(n_terms)
         narrow = min(b, 1 - b)
         if not b_min <= b <= b_max:

@@ -1,0 +1,388 @@
+"""The arbitrary-precision Abel-Fredholm reference (``verification.abel_fredholm_mp``).
+
+Checks against things computed another way: mpmath's Bessel functions, hypergeometric
+function and quadrature (for the xi-integrals), the double-precision solver ``solve``,
+physical identities evaluated by quadrature of the computed profiles (torque balance,
+omega = 2 int s r^2 dr), the asymptotes b -> 0 and b -> 1, the solve at other resolutions
+and precisions, and the direct collocation method (slow tier).  The default tier works
+at 20-25 digits.
+"""
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+flint = pytest.importorskip("flint")  # the Arb-based reference needs python-flint (optional)
+
+from torsional_contact import solve  # noqa: E402 (after the skip)
+from torsional_contact.io.cli import main as cli_main  # noqa: E402 (after the skip)
+from torsional_contact.verification import kernels_mp, special_mp  # noqa: E402 (after the skip)
+from torsional_contact.verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm  # noqa: E402 (after the skip)
+from torsional_contact.verification.arbitrary_precision import arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
+from torsional_contact.verification.nystrom_mp import nodes_for_digits, solve_state  # noqa: E402 (after the skip)
+
+REFERENCE_RADII = ("0.1", "0.3", "0.5", "0.6", "0.7", "0.9")
+
+
+@pytest.fixture(scope="module")
+def references():
+    """20-digit references at the reference radii (computed once for the module)."""
+    return {b: solve_reference_abel_fredholm(b, 20) for b in REFERENCE_RADII}
+
+
+def _mp(value):
+    return arb_to_mp(value)
+
+
+# -- kernels (M1)-(M4) against mpmath -------------------------------------------------
+
+
+@pytest.mark.parametrize("x", ["1e-9", "0.3", "7", "33.5", "80", "250"])
+def test_bessel_ratio_against_mpmath(x):
+    with working_digits(30):
+        value = _mp(special_mp.bessel_ratio([flint.arb(x).mid()])[0])
+        xm = _mp(flint.arb(x).mid())
+        exact = mpmath.besselk(2, xm) / mpmath.besseli(2, xm)
+        assert abs(value / exact - 1) < mpmath.mpf(10) ** -29
+
+
+@pytest.mark.parametrize("x", ["0.3", "7", "60", "150", "400"])
+def test_integral_x_i1_against_hypergeometric_form(x):
+    """F(x) = x^3/6 1F2(3/2; 2, 5/2; x^2/4) (eq. A3), mpmath's hyp1f2; above the
+    asymptotic threshold (~83 at 30 digits) the Hankel-type expansion is used."""
+    with working_digits(30):
+        xm = mpmath.mpf(x)
+        exact = xm**3 / 6 * mpmath.hyp1f2(mpmath.mpf(3) / 2, 2, mpmath.mpf(5) / 2, xm**2 / 4)
+        value = _mp(special_mp.integral_x_i1(flint.arb(x)))
+        excess = _mp(special_mp.integral_x_i1_excess(flint.arb(x)))
+        assert abs(value / exact - 1) < mpmath.mpf(10) ** -29
+        assert abs(excess / (exact - xm**3 / 6) - 1) < mpmath.mpf(10) ** -27
+
+
+def test_torque_rotation_against_mpmath_quadrature():
+    """BETA = 1/2 + (1/pi) int K2 [1 - xi^2/(8 I2)] d xi with mpmath's Bessel functions and
+    tanh-sinh quadrature; the bracket cancels like xi^2/12 at small xi, so the integrand is
+    evaluated with 10 + 2 log10(1/xi) extra digits."""
+    with working_digits(20):
+        beta = _mp(kernels_mp.torque_rotation(20))
+
+        def integrand(x):
+            with mpmath.workdps(28 + max(0, int(-2 * mpmath.log10(x)))):
+                return mpmath.besselk(2, x) * (1 - x**2 / (8 * mpmath.besseli(2, x)))
+
+        exact = mpmath.mpf(1) / 2 + mpmath.quad(integrand, [0, 1, 4, 16, 64]) / mpmath.pi
+        assert abs(beta - exact) < mpmath.mpf(10) ** -19
+    from torsional_contact.solvers.kernels import TORQUE_ROTATION
+
+    assert abs(float(beta) - TORQUE_ROTATION) < 1e-16
+
+
+def test_abel_kernel_against_mpmath_quadrature():
+    """P(t, s) of (A2) at one point by mpmath quadrature (integrand with 20 guard digits)."""
+    t, s = mpmath.mpf("0.3"), mpmath.mpf("0.55")
+    with working_digits(22):
+        quadrature = kernels_mp.xi_quadrature(2 - 0.3 - 0.55, 22)
+        value = _mp(kernels_mp.abel_kernel([mp_to_arb(t)], [mp_to_arb(s)], quadrature)[0, 0])
+
+        def integrand(x):  # the bracket is O(xi^4) from terms O(xi^2): 2 log10(1/xi) digits lost
+            with mpmath.workdps(30 + max(0, int(-2 * mpmath.log10(x)))):
+                return (mpmath.sinh(x * t) * mpmath.sinh(x * s) - x * x * t * s) * (
+                    mpmath.besselk(2, x) / mpmath.besseli(2, x))
+
+        exact = 2 / mpmath.pi * mpmath.quad(integrand, [0, 1, 4, 16, 64])
+        assert abs(value - exact) < mpmath.mpf(10) ** -21
+
+
+@pytest.mark.parametrize(("rate", "digits"), [(0.4, 30), (0.02, 45), (1.0, 90)])
+def test_xi_quadrature_split_point(rate, digits):
+    """The first n_below nodes are exactly those below X (a panel edge), whatever the
+    first panel's node count; the weights add up to the length of the covered interval."""
+    with working_digits(digits):
+        q = kernels_mp.xi_quadrature(rate, digits)
+        assert float(q.nodes[q.n_below - 1]) < q.asymptotic_start
+        assert q.n_below == len(q.nodes) or q.asymptotic_start < float(q.nodes[q.n_below])
+        assert all(float(a) < float(b) for a, b in zip(q.nodes, q.nodes[1:], strict=False))
+        below = sum(q.weights[: q.n_below], flint.arb(0))
+        assert abs(_mp(below) - mpmath.mpf(q.asymptotic_start)) < mpmath.mpf(10) ** (-digits + 2)
+
+
+def test_spinning_transform_tail_is_independent_of_its_split_point():
+    """E_1(t) up to t = 1: numerical integral to X plus the closed-form tail (M4), for two
+    different X (quadratures built for 30 and 45 digits), agree to the working precision;
+    and the double-precision table of ``kernels`` agrees to its stated accuracy."""
+    from torsional_contact.solvers.kernels import spinning_transform
+
+    t_values = ["0.2", "0.9", "0.999", "0.9999999", "1"]
+    with working_digits(30):
+        points = [flint.arb(t).mid() for t in t_values]
+        one = flint.arb(1)
+        first = kernels_mp.load_transform(points, one, kernels_mp.xi_quadrature(0.3, 30))
+        second = kernels_mp.load_transform(points, one, kernels_mp.xi_quadrature(0.2, 45))
+        assert kernels_mp.xi_quadrature(0.3, 30).asymptotic_start != kernels_mp.xi_quadrature(0.2, 45).asymptotic_start
+        for a, b in zip(first, second, strict=True):
+            assert abs(_mp(a) - _mp(b)) < mpmath.mpf(10) ** -28
+    double = spinning_transform(np.array([float(t) for t in t_values]))
+    values = np.array([float(v) for v in first])
+    np.testing.assert_allclose(values[:3], double[:3], rtol=0, atol=1e-14)
+    # the double-precision Chebyshev table loses accuracy at t -> 1 (measured 6e-14, 2e-13)
+    np.testing.assert_allclose(values[3:], double[3:], rtol=0, atol=5e-13)
+
+
+# -- the solution: resolution, precision, double precision ----------------------------
+
+
+@pytest.mark.parametrize("b", ["0.3", "0.9"])
+def test_two_resolutions_and_precisions_agree(b):
+    """The default node count for 25 digits and 1.4 times as many nodes at 8 more working
+    digits give T* and omega to 10^-25 (relative)."""
+    n = nodes_for_digits(float(b), 25)
+    coarse = solve_state(b, n, 27)
+    fine = solve_state(b, math.ceil(1.4 * n), 35)
+    with working_digits(35):
+        for name in ("torque", "rigid_rotation"):
+            a, c = _mp(getattr(coarse, name)), _mp(getattr(fine, name))
+            assert abs(a / c - 1) < mpmath.mpf(10) ** -25
+
+
+def test_sixty_digits_do_not_depend_on_the_discretisation():
+    """At 60 digits (first xi-panel mapped by u^5) two Nystrom resolutions, two working
+    precisions and two xi-quadrature layouts give the same T* and omega."""
+    first = solve_state("0.6", 60, 62)
+    second = solve_state("0.6", 76, 68, first_panel=0.3, width_decays=11.0)
+    with working_digits(68):
+        for name in ("torque", "rigid_rotation"):
+            a, c = _mp(getattr(first, name)), _mp(getattr(second, name))
+            assert abs(a / c - 1) < mpmath.mpf(10) ** -58
+
+
+def test_reference_result_and_its_error_estimate(references):
+    for b, ref in references.items():
+        assert ref.digits == 20
+        assert 0 < ref.error_estimate < mpmath.mpf(10) ** -20
+        assert ref.fine.n_nodes > ref.coarse.n_nodes and ref.fine.work_digits > ref.coarse.work_digits
+        assert 1 < ref.torque < mpmath.mpf(4) / 3 and ref.rigid_rotation > 0, b
+        record = ref.as_dict(["0.25", "0.95"])
+        assert len(record["torque"].replace(".", "").lstrip("0")) == 20
+        assert set(record) >= {"torque", "rigid_rotation", "n_nodes", "seconds", "error_estimate",
+                               "error_estimate_method", "radii", "traction", "slip"}
+    # T* decreases with b (the torque curve)
+    torques = [references[b].torque for b in REFERENCE_RADII]
+    assert all(t1 < t0 for t0, t1 in zip(torques, torques[1:], strict=False))
+
+
+def test_double_precision_solve_within_1e13(references):
+    radii = ["0.05", "0.2", "0.45", "0.62", "0.8", "0.97"]
+    for b, ref in references.items():
+        double = solve(stick_radius=float(b))
+        assert abs(double.torque - float(ref.torque)) < 1e-13, b
+        assert abs(double.rigid_rotation - float(ref.rigid_rotation)) < 1e-13, b
+        r = np.array([float(x) for x in radii])
+        np.testing.assert_allclose(double.traction(r), [float(v) for v in ref.traction(radii)], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(double.slip(r), [float(v) for v in ref.slip(radii)], rtol=0, atol=1e-12)
+
+
+def test_traction_near_slip_onset_at_two_precisions():
+    """b = 0.97 needs 125-150 Chebyshev terms for (F6): the series is summed without loss
+    (two working precisions agree; ball arithmetic in Clenshaw's recurrence lost 9 digits
+    here) and matches the double-precision solver."""
+    radii = ["0.1", "0.5", "0.9", "0.969"]
+    values = []
+    for work in (25, 32):
+        state = solve_state("0.97", 70, work)
+        with working_digits(work):
+            values.append([_mp(v) for v in state.traction_arb([mp_to_arb(mpmath.mpf(r)) for r in radii])])
+    with working_digits(32):
+        assert max(abs(a - c) for a, c in zip(*values, strict=True)) < mpmath.mpf(10) ** -22
+    double = solve(stick_radius=0.97).traction(np.array([float(r) for r in radii]))
+    np.testing.assert_allclose(double, [float(v) for v in values[1]], rtol=0, atol=1e-12)
+
+
+def test_precision_is_restored():
+    mpmath.mp.dps = 17
+    flint.ctx.prec = 77
+    try:
+        solve_state("0.5", 12, 20)
+        assert mpmath.mp.dps == 17 and flint.ctx.prec == 77
+    finally:
+        flint.ctx.prec = 53
+
+
+# -- physical identities at high precision ---------------------------------------------
+
+
+def test_torque_balance_by_quadrature_of_the_traction(references):
+    """T* = 4 int_0^1 q r^2 dr with q from (F6), by mpmath's tanh-sinh quadrature over the
+    stick disc (in theta, r = b cos theta: analytic), independent of (F4)."""
+    ref = references["0.6"]
+    state = ref.fine
+    with working_digits(state.work_digits):
+        b = arb_to_mp(state.stick_radius)
+
+        def integrand(theta):
+            r = b * mpmath.cos(theta)
+            q = arb_to_mp(state.traction_arb([mp_to_arb(r)])[0])
+            return q * r * r * b * mpmath.sin(theta)
+
+        mpmath.mp.dps = 24
+        stick = mpmath.quad(integrand, [0, mpmath.pi / 2])
+        balance = 4 * stick + 4 * (1 - b**3) / 3
+        assert abs(balance - ref.torque) < mpmath.mpf(10) ** -20
+
+
+def _rotation_from_slip(ref, b_text, digits):
+    """2 int_b^1 s r^2 dr by mpmath's tanh-sinh quadrature (the slip has (r - b)^(3/2) at
+    r = b and logarithmic terms at the corner r = 1, which tanh-sinh absorbs)."""
+    with working_digits(digits + 3):
+        b = mpmath.mpf(b_text)
+
+        def integrand(r):
+            return ref.slip([r])[0] * r * r
+
+        mpmath.mp.dps = digits
+        return 2 * mpmath.quad(integrand, [b, 1])
+
+
+def test_rigid_rotation_from_the_slip():
+    """omega = 4 int u r^2 dr = 2 int_b^1 s r^2 dr (every Dini term is orthogonal to r), with
+    s from (F7) and omega from (F5): an identity the method does not impose (here to 10^-13,
+    beyond double precision; to 10^-19 in the slow tier)."""
+    ref = solve_reference_abel_fredholm("0.7", 13)
+    assert abs(_rotation_from_slip(ref, "0.7", 13) - ref.rigid_rotation) < mpmath.mpf(10) ** -13
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("b", ["0.3", "0.7"])
+def test_rigid_rotation_from_the_slip_to_20_digits(references, b):
+    ref = references[b]
+    assert abs(_rotation_from_slip(ref, b, 21) - ref.rigid_rotation) < mpmath.mpf(10) ** -19
+
+
+def test_interface_conditions(references):
+    ref = references["0.5"]
+    b = mpmath.mpf("0.5")
+    with working_digits(25):
+        stick = [b * k / 40 for k in range(40)]
+        traction = ref.traction(stick)
+        assert all(abs(q) <= 1 for q in traction)
+        # the stick-side traction rises continuously to 1 (no inverse square root at r = b)
+        gaps = [1 - q for q in ref.traction([b * (1 - mpmath.mpf(10) ** -k) for k in (8, 12)])]
+        assert all(g > 0 for g in gaps)
+        assert abs(gaps[1] / gaps[0] - mpmath.mpf(10) ** -2) < mpmath.mpf("2e-3")  # ~ sqrt(b - r)
+        annulus = [b + (1 - b) * mpmath.mpf(k) / 12 for k in range(1, 13)]
+        slip = ref.slip(annulus)
+        assert all(s > 0 for s in slip) and all(s1 > s0 for s0, s1 in zip(slip, slip[1:], strict=False))
+        assert all(q == 1 for q in ref.traction(annulus))
+        assert all(s == 0 for s in ref.slip(stick))
+        # the slip starts like (r - b)^(3/2)
+        eps = [mpmath.mpf(10) ** -6, mpmath.mpf(10) ** -5]
+        ratio = [s / e**1.5 for s, e in zip(ref.slip([b + e for e in eps]), eps, strict=True)]
+        assert abs(ratio[0] / ratio[1] - 1) < 0.01
+
+
+# -- limits b -> 0 and b -> 1 --------------------------------------------------------------
+
+
+def test_small_stick_disc_limit():
+    """4/3 - T* = (16/(9 pi)) b^3 + O(b^5): Richardson in b^2 from b = 0.01, 0.02."""
+    deficits = {}
+    for b in ("0.01", "0.02"):
+        state = solve_state(b, 20, 22)
+        with working_digits(22):
+            deficits[b] = (mpmath.mpf(4) / 3 - _mp(state.torque)) / mpmath.mpf(b) ** 3
+    extrapolated = (4 * deficits["0.01"] - deficits["0.02"]) / 3
+    assert abs(extrapolated - 16 / (9 * mpmath.pi)) < 1e-6
+
+
+@pytest.mark.slow
+def test_slip_onset_limit():
+    """T* - 1 = (2/pi)(1 - b) + O((1 - b)^2): linear extrapolation of (T* - 1)/(1 - b)."""
+    slopes = {}
+    for b in ("0.99", "0.995"):
+        state = solve_state(b, 90, 20)
+        with working_digits(20):
+            slopes[b] = (_mp(state.torque) - 1) / (1 - mpmath.mpf(b))
+    extrapolated = 2 * slopes["0.995"] - slopes["0.99"]
+    assert abs(extrapolated - 2 / mpmath.pi) < 2e-4
+    assert slopes["0.995"] < slopes["0.99"]
+
+
+# -- independent methods (slow) ------------------------------------------------------------
+
+
+@pytest.mark.slow
+def test_agrees_with_direct_collocation(references):
+    """A second method: first-kind collocation of the stick condition (double precision)."""
+    from torsional_contact.verification.collocation import solve_direct
+
+    direct = solve_direct(0.3, 8)
+    ref = references["0.3"]
+    assert abs(direct.torque - float(ref.torque)) < 1e-11
+    assert abs(direct.rigid_rotation - float(ref.rigid_rotation)) < 2e-11
+
+
+@pytest.mark.slow
+def test_thirty_digits_at_the_reference_radius():
+    ref = solve_reference_abel_fredholm("0.6", 30)
+    assert ref.error_estimate < mpmath.mpf(10) ** -30
+    check = solve_state("0.6", 70, 50)
+    with working_digits(50):
+        assert abs(_mp(check.torque) - ref.torque) < mpmath.mpf(10) ** -30
+        assert abs(_mp(check.rigid_rotation) - ref.rigid_rotation) < mpmath.mpf(10) ** -31
+
+
+# -- bad input: API and command line ----------------------------------------------------------
+
+
+@pytest.mark.parametrize("value", ["0", "1", "1.5", "-0.2", "nan", "inf", "abc", "1/2", ""])
+def test_bad_stick_radius(value):
+    with pytest.raises(ValueError, match="stick_radius"):
+        solve_reference_abel_fredholm(value, 10)
+
+
+@pytest.mark.parametrize("digits", [0, -3, MAX_DIGITS + 1, 2.5, True])
+def test_bad_digits(digits):
+    with pytest.raises(ValueError, match="digits"):
+        solve_reference_abel_fredholm("0.5", digits)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["--stick-radius", "0.6", "--method", "fast", "--n-terms", "145"],
+        ["--stick-radius", "0.6", "--method", "fast", "--digits", "0"],
+        ["--stick-radius", "0.6", "--method", "fast", "--digits", str(MAX_DIGITS + 1)],
+        ["--stick-radius", "0.6", "--method", "fastest"],
+        ["--stick-radius", "1", "--method", "fast"],
+        ["--stick-radius", "0", "--method", "fast"],
+        ["--stick-radius", "0x0.8", "--method", "fast"],
+        ["--stick-radius", "nan", "--method", "fast"],
+        ["--stick-radius", "0.6", "--method", "fast", "--radii", "0.5", "1.01"],
+        ["--stick-radius", "0.6", "--method", "fast", "--radii", "-0.1"],
+        ["--stick-radius", "0.6", "--method", "fast", "--radii", "half"],
+        ["--stick-radius", "0.6", "--method", "complete", "--radii", "0.5"],
+    ],
+)
+def test_cli_bad_input_exits_2(argv, capsys):
+    assert cli_main(["reference", *argv, "--json"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert captured.err.count("\n") == 1 and "error" in captured.err
+
+
+def test_cli_reference_fast(capsys):
+    import json
+
+    assert cli_main(["reference", "--stick-radius", "0.7", "--method", "fast", "--digits", "12", "--json",
+                     "--radii", "0.35", "0.85"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert record["method"] == "fast" and record["digits"] == 12 and record["stick_radius"] == "0.7"
+    assert len(record["torque"].replace(".", "").lstrip("0")) == 12
+    double = solve(stick_radius=0.7)
+    assert abs(float(record["torque"]) - double.torque) < 1e-11
+    assert abs(float(record["rigid_rotation"]) - double.rigid_rotation) < 1e-11
+    assert float(record["error_estimate"]) < 1e-12 and record["error_estimate_method"]
+    assert record["radii"] == ["0.35", "0.85"] and len(record["traction"]) == len(record["slip"]) == 2
+    assert float(record["slip"][0]) == 0 and float(record["traction"][1]) == 1
+    assert abs(float(record["slip"][1]) - float(double.slip(0.85))) < 1e-11
