@@ -12,10 +12,11 @@ legitimately changes from one run to the next:
   must be identical;
 * Markdown: sections whose heading mentions "seconds" and "Total run time" lines.
 
-Files that quote timings in free form (the benchmark macros and tables, the work-precision figure
-and the manuscript, which prints those tables) are compared too but are expected to differ.  The
-LaTeX build directory and logs are not compared.  Exit status 0 when every other output is
-identical, 1 otherwise, 2 for bad arguments.
+Files that record timings (the benchmark data, macros and tables, each job's timings, the
+work-precision figure, the manuscript, which prints those tables, and Snakemake's report) are
+compared too but are expected to differ (TIMING_OUTPUTS).  The LaTeX build directory and logs are
+not compared.  The workflow tests use the same comparison for two clean local builds.  Exit status
+0 when every other output is identical, 1 otherwise, 2 for bad arguments.
 """
 
 from __future__ import annotations
@@ -29,24 +30,33 @@ from pathlib import Path
 
 from torsional_contact.provenance import write_text
 
-#: Outputs that print wall-clock timings in free form (relative paths, glob patterns).
+#: Outputs that record wall-clock timings (relative paths, glob patterns; a trailing "/" names a
+#: whole folder): compared, but expected to differ from one run to the next.
 TIMING_OUTPUTS = (
-    "macros/benchmark.tex",
+    "timings/",  # each job's own timings (the data lives elsewhere)
+    "data/benchmark_*.json",  # benchmark data: every number in them is a time or a ratio of times
+    "macros/benchmark*.tex",
     "macros/scenes.tex",
     "tables/scenes.tex",
+    "macros/reference_timing.tex",
     "figures/work_precision.pdf",
     "figures/work_precision.png",
-    "paper/ms.pdf",
+    "paper/ms.pdf",  # prints the timing macros and tables
+    "report.html",  # Snakemake's report records each job's run time
 )
 #: Outputs not compared: LaTeX intermediate files and logs.
-EXCLUDED = ("paper/build/*", "*.log")
+EXCLUDED = ("paper/build/", "logs/", "*.log")
 
 _PDF_VOLATILE = re.compile(rb"/(CreationDate|ModDate)\s*\([^)]*\)|/ID\s*\[\s*<[0-9A-Fa-f]*>\s*<[0-9A-Fa-f]*>\s*\]")
 _TIMING_KEY = re.compile(r"second|time|saving|load_average|worst_b|repeats", re.IGNORECASE)
 
 
 def _matches(relpath: str, patterns) -> bool:
-    return any(Path(relpath).match(pattern) or relpath == pattern for pattern in patterns)
+    """True when ``relpath`` is, matches (glob) or lies in (pattern ending in "/") one of ``patterns``."""
+    return any(
+        relpath.startswith(pattern) if pattern.endswith("/") else (Path(relpath).match(pattern) or relpath == pattern)
+        for pattern in patterns
+    )
 
 
 def normalise_pdf(data: bytes) -> bytes:

@@ -153,8 +153,9 @@ JobCompType=jobcomp/none
 MpiDefault=none
 SwitchType=switch/none
 ReturnToService=2
-# finished jobs stay visible to squeue for 10 minutes: the status queries use squeue (no sacct here)
-MinJobAge=600
+# finished jobs stay visible to squeue for 2 hours (the whole build, however slow the machine): the
+# status queries and the job table below use squeue (no sacct here)
+MinJobAge=7200
 $node_hardware NodeAddr=127.0.0.1 State=UNKNOWN
 PartitionName=torsional Nodes=$node Default=YES MaxTime=INFINITE State=UP
 EOF

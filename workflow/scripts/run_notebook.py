@@ -1,8 +1,8 @@
 """Execute one notebook (jupytext percent source) on the build's results; write .ipynb and HTML.
 
 The notebook runs in notebooks/ with RESULTS_DIR pointing at the build's output folder
-(relative, so no absolute path ends up in the outputs); cell timing metadata is not recorded,
-so the same results give the same files.  Execution errors fail the job.
+(relative, so no absolute path ends up in the outputs); cell ids are numbered and no timing
+metadata is recorded, so the same results give the same files.  Execution errors fail the job.
 """
 
 import argparse
@@ -30,10 +30,12 @@ def main():
     os.environ["RESULTS_DIR"] = os.path.relpath(a.results, workdir)
     os.environ["MPLBACKEND"] = "module://matplotlib_inline.backend_inline"  # figures inline, not Agg
     notebook = jupytext.read(source)
+    for index, cell in enumerate(notebook.cells):  # nbformat would draw random cell ids
+        cell["id"] = f"cell-{index:03d}"
     client = nbclient.NotebookClient(notebook, kernel_name="python3", timeout=a.timeout, record_timing=False,
                                      resources={"metadata": {"path": str(workdir)}})
     client.execute()
-    for cell in notebook.cells:  # execution counts and ids are deterministic; drop kernel-specific noise
+    for cell in notebook.cells:  # execution counts and ids are deterministic; drop the execution timestamps
         cell.get("metadata", {}).pop("execution", None)
     write_text(a.ipynb, nbformat.writes(notebook))
     html, _ = HTMLExporter(template_name="lab").from_notebook_node(notebook)

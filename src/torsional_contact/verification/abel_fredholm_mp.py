@@ -1,6 +1,6 @@
 r"""Converged partial-slip solution to a requested number of digits, with an error estimate.
 
-Units (CONTRACT.md): r in a; tractions in f p0; slip in f p0 a / mu; omega in f p0 / mu;
+Units (docs/conventions.md): r in a; tractions in f p0; slip in f p0 a / mu; omega in f p0 / mu;
 T* = 2T/(f F a) (eq. 32).
 
 The Abel-Fredholm method (F1)-(F7) of ``fast`` in arbitrary precision (``nystrom_mp``,

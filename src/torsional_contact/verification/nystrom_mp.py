@@ -1,6 +1,6 @@
 r"""Nystrom solution of the Abel-Fredholm equation in arbitrary precision (one solve).
 
-Units (CONTRACT.md): r, t in a; tractions in f p0; slip in f p0 a / mu; omega in
+Units (docs/conventions.md): r, t in a; tractions in f p0; slip in f p0 a / mu; omega in
 f p0 / mu; T* = 2T/(f F a) (eq. 32).
 
 The reduction of ``fast`` (equations (F1)-(F7) of its docstring), evaluated with
