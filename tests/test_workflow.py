@@ -233,5 +233,7 @@ def test_two_clean_builds_give_identical_non_timing_outputs(built, tmp_path):
     shutil.rmtree(built)
     snakemake()
     verdicts = compare_builds.compare_builds(first, built)
-    failures = [(rel, verdict) for rel, verdict in verdicts if compare_builds.is_failure(verdict)]
+    # byte for byte: unlike the local/SLURM comparison, no normalisation of non-timing outputs
+    failures = [(rel, verdict) for rel, verdict in verdicts
+                if verdict != "identical" and not compare_builds.is_timing_output(rel)]
     assert not failures, compare_builds.report(first, built, verdicts)

@@ -59,6 +59,11 @@ def _matches(relpath: str, patterns) -> bool:
     )
 
 
+def is_timing_output(relpath: str) -> bool:
+    """True for an output that records wall-clock timings (TIMING_OUTPUTS)."""
+    return _matches(relpath, TIMING_OUTPUTS)
+
+
 def normalise_pdf(data: bytes) -> bytes:
     """PDF bytes without the creation/modification dates and the document ID."""
     return _PDF_VOLATILE.sub(b"", data)
@@ -128,7 +133,7 @@ def compare_builds(first: Path, second: Path) -> list[tuple[str, str]]:
             verdicts.append((rel, "identical"))
         elif comparable(first / rel) == comparable(second / rel):
             verdicts.append((rel, "identical-normalised"))
-        elif _matches(rel, TIMING_OUTPUTS):
+        elif is_timing_output(rel):
             verdicts.append((rel, "timing-differs"))
         else:
             verdicts.append((rel, "DIFFERS"))
