@@ -179,18 +179,13 @@ def ladder_table(ladder, b_main, digits, weak_digits):
         rf"(i) & Abel--Fredholm, double vs.\ {digits} digits & {cell(comp['fast_vs_truth_torque'])}"
         rf" & {cell(comp['fast_vs_truth_rigid_rotation'])} & {cell(max(r['fast_vs_truth_torque'] for r in ladder))}\\",
     ]
-    for label, method, row in (("complete", "complete", comp), ("printed", "published", pub)):
-        same = [r for r in ladder if r["method"] == method]
-        lines.append(rf"(ii) & {label}, $N=145$: double vs.\ {weak_digits} digits"
-                     rf" & {cell(row['double145_vs_exact145_torque'])}"
-                     rf" & {cell(row['double145_vs_exact145_rigid_rotation'])}"
-                     rf" & {cell(max(r['double145_vs_exact145_torque'] for r in same))}\\")
-    for label, method, row in (("complete", "complete", comp), ("printed", "published", pub)):
-        same = [r for r in ladder if r["method"] == method]
-        lines.append(rf"(iii) & {label}, $N=145$ ({weak_digits} digits) vs.\ converged"
-                     rf" & {cell(row['exact145_vs_truth_torque'])}"
-                     rf" & {cell(row['exact145_vs_truth_rigid_rotation'])}"
-                     rf" & {cell(max(r['exact145_vs_truth_torque'] for r in same))}\\")
+    rungs = (("(ii)", "double145_vs_exact145", rf"$N=145$: double vs.\ {weak_digits} digits"),
+             ("(iii)", "exact145_vs_truth", rf"$N=145$ ({weak_digits} digits) vs.\ converged"))
+    for rung, key, compared in rungs:
+        for label, method, row in (("complete", "complete", comp), ("printed", "published", pub)):
+            same = [r for r in ladder if r["method"] == method]
+            lines.append(rf"{rung} & {label}, {compared} & {cell(row[f'{key}_torque'])}"
+                         rf" & {cell(row[f'{key}_rigid_rotation'])} & {cell(max(r[f'{key}_torque'] for r in same))}\\")
     lines += [r"\bottomrule", r"\end{tabular}"]
     return "\n".join(lines) + "\n"
 
