@@ -34,7 +34,7 @@ import numpy as np
 RESULTS = Path(os.environ.get("RESULTS_DIR", "../results"))
 if not RESULTS.is_absolute() and not RESULTS.exists():
     RESULTS = Path.cwd().parent / RESULTS
-print("reading", os.path.relpath(RESULTS))
+assert (RESULTS / "data").is_dir(), f"no build found in {RESULTS}: run bash workflow/main.sh first"
 
 
 def read_csv(path):

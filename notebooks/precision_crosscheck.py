@@ -105,6 +105,7 @@ for method in ("published", "complete"):
 ax.set_xlabel("N")
 ax.set_ylabel("1-norm condition number")
 ax.legend()
+plt.show()
 
 # %% [markdown]
 # ## Conclusion

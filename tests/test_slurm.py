@@ -112,7 +112,14 @@ def test_compare_builds_verdicts(tmp_path):
     _write(b / "macros/benchmark.tex", "2.0 ms")
     _write(a / "tables/same.tex", "x")
     _write(b / "tables/same.tex", "x")
+    _write(a / "timings/abel_fredholm/b0.3.txt", "1.0 s")  # a whole folder of timings
+    _write(b / "timings/abel_fredholm/b0.3.txt", "2.0 s")
+    _write(a / "macros/reference_timing.tex", "1 s")
+    _write(b / "macros/reference_timing.tex", "2 s")
+    _write(a / "notebooks/n.ipynb", '{"id": "cell-000", "text": "<Legend at 0x7f01>"}')  # no normalisation
+    _write(b / "notebooks/n.ipynb", '{"id": "cell-000", "text": "<Legend at 0x7f02>"}')
     _write(a / "paper/build/ms.log", "a")  # excluded
+    _write(a / "logs/x.txt", "a")  # excluded
     _write(b / "only.csv", "1")
     verdicts = dict(compare_builds.compare_builds(a, b))
     assert verdicts == {
@@ -122,12 +129,15 @@ def test_compare_builds_verdicts(tmp_path):
         "data/u.json": "DIFFERS",
         "errata/e.md": "identical-normalised",
         "macros/benchmark.tex": "timing-differs",
+        "timings/abel_fredholm/b0.3.txt": "timing-differs",
+        "macros/reference_timing.tex": "timing-differs",
+        "notebooks/n.ipynb": "DIFFERS",
         "tables/same.tex": "identical",
         "only.csv": "ONLY-IN-slurm",
     }
     assert compare_builds.main([str(a), str(b), "--report", str(tmp_path / "r.txt")]) == 1
-    assert "; 3 deterministic outputs differ" in (tmp_path / "r.txt").read_text().splitlines()[-1]
-    for name in ("figures/g.pdf", "data/u.json", "only.csv"):
+    assert "; 4 deterministic outputs differ" in (tmp_path / "r.txt").read_text().splitlines()[-1]
+    for name in ("figures/g.pdf", "data/u.json", "only.csv", "notebooks/n.ipynb"):
         (b / name).unlink()
         (a / name).unlink(missing_ok=True)
     assert compare_builds.main([str(a), str(b)]) == 0
