@@ -3,11 +3,7 @@
 # (reference data, solutions, every figure and table, the manuscript results/paper/ms.pdf).
 # Extra arguments go to snakemake (e.g. --configfile config/test.yaml, -n).
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-bash workflow/setup_env.sh
-bash workflow/ensure_tex.sh
-export PATH="$root/.venv/bin:$PATH"
+source "$(dirname "${BASH_SOURCE[0]}")/prepare.sh"
 start=$(date +%s)
 snakemake --profile workflow/profiles/default "$@"
 echo "main: workflow finished in $(( $(date +%s) - start )) s; manuscript: results/paper/ms.pdf" >&2

@@ -2,11 +2,7 @@
 # The README's test command: set up .venv (and TeX), lint, run the whole test suite
 # (slow tier included: the end-to-end workflow on the small test configuration).
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-bash workflow/setup_env.sh
-bash workflow/ensure_tex.sh
-export PATH="$root/.venv/bin:$PATH"
+source "$(dirname "${BASH_SOURCE[0]}")/prepare.sh"
 ruff check src tests workflow notebooks
 # every tier (the slow one too: end-to-end builds), on two workers; the workflow tests share one
 # worker (xdist group) because their builds share results/ci and Snakemake's lock

@@ -18,11 +18,8 @@ LABELS = {
 
 
 def main():
-    p = figure_parser(__doc__)
-    p.add_argument("--quantity", choices=sorted(LABELS), required=True)
+    p = figure_parser(__doc__, quantities=LABELS)
     p.add_argument("--stick-radius", type=float, required=True)
-    p.add_argument("--method", default=None)
-    p.add_argument("--n-terms", type=int, default=None)
     p.add_argument("--nr", type=int, default=121)
     p.add_argument("--nz", type=int, default=101)
     p.add_argument("--z-max", type=float, default=1.0)

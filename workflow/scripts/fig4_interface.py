@@ -15,11 +15,8 @@ LABELS = {
 
 
 def main():
-    p = figure_parser(__doc__)
-    p.add_argument("--quantity", choices=sorted(LABELS), required=True)
+    p = figure_parser(__doc__, quantities=LABELS)
     p.add_argument("--stick-radii", type=float, nargs="+", required=True)
-    p.add_argument("--method", default=None)
-    p.add_argument("--n-terms", type=int, default=None)
     p.add_argument("--n-points", type=int, default=801)
     a = p.parse_args()
 

@@ -33,11 +33,16 @@ def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
     plt.close(fig)
 
 
-def figure_parser(doc: str, data: bool = False) -> argparse.ArgumentParser:
-    """Command line of a figure script: --style, --pdf, --png (and --data for scripts that plot a JSON)."""
+def figure_parser(doc: str, data: bool = False, quantities=None) -> argparse.ArgumentParser:
+    """Command line of a figure script: --style, --pdf, --png; --data for scripts that plot a JSON;
+    for scripts that solve themselves, --quantity (one of ``quantities``), --method and --n-terms."""
     parser = argparse.ArgumentParser(description=doc.strip().splitlines()[0])
     if data:
         parser.add_argument("--data", required=True, help="JSON written by the workflow")
+    if quantities is not None:
+        parser.add_argument("--quantity", choices=sorted(quantities), required=True)
+        parser.add_argument("--method", default=None, help="solve()'s method (default: the most accurate)")
+        parser.add_argument("--n-terms", type=int, default=None, help="N of a weak form")
     parser.add_argument("--style", help="matplotlib style file")
     parser.add_argument("--pdf", required=True)
     parser.add_argument("--png")
