@@ -287,22 +287,14 @@ def small_stick_disc(stick_radius: float) -> SmallStickDisc:
     deficit = 16.0 / (9.0 * np.pi) * b**3
     torque = GROSS_SLIP_TORQUE - deficit
     xi, w = kernels.xi_grid(1.0 - b)
-    empty = np.zeros(0)
-    return SmallStickDisc(
+    return SmallStickDisc.without_nodes(
         stick_radius=b,
         torque=torque,
         rigid_rotation=omega_big - kernels.TORQUE_ROTATION * torque,
-        n_nodes=0,
         rotation_constant=omega_big,
-        nodes=empty,
-        weights=empty,
-        abel_density=empty,
-        resolution_estimate=0.0,
         torque_deficit=deficit,
-        _log_span=0.0,
-        _xi=xi,
-        _xi_weights=w,
-        _g_chebyshev=np.zeros(1),
+        xi=xi,
+        xi_weights=w,
     )
 
 

@@ -193,6 +193,19 @@ class FastSolution:
     _xi_weights: np.ndarray = field(repr=False)
     _g_chebyshev: np.ndarray = field(repr=False)
 
+    @classmethod
+    def without_nodes(cls, *, stick_radius, torque, rigid_rotation, rotation_constant, torque_deficit,
+                      log_span=0.0, xi=None, xi_weights=None):
+        """A state given in closed form (no Nystrom nodes): the limits b = 0, 1 and the expansions."""
+        empty = np.zeros(0)
+        return cls(
+            stick_radius=stick_radius, torque=torque, rigid_rotation=rigid_rotation, n_nodes=0,
+            rotation_constant=rotation_constant, nodes=empty, weights=empty, abel_density=empty,
+            resolution_estimate=0.0, torque_deficit=torque_deficit, _log_span=log_span,
+            _xi=empty if xi is None else xi, _xi_weights=empty if xi_weights is None else xi_weights,
+            _g_chebyshev=np.zeros(1),
+        )
+
     # -- interface traction -------------------------------------------------------
     @cached_property
     def _gy_chebyshev(self):
@@ -368,24 +381,15 @@ class FastSolution:
 
 def _limit_solution(b: float) -> FastSolution:
     """b = 1 (slip onset: T* = 1, omega = 0) or b = 0 (spinning: T* = 4/3, omega = +inf)."""
-    empty = np.zeros(0)
     onset = b == 1.0
     rotation = 0.0 if onset else math.inf
-    return FastSolution(
+    return FastSolution.without_nodes(
         stick_radius=b,
         torque=1.0 if onset else GROSS_SLIP_TORQUE,
         rigid_rotation=rotation,
-        n_nodes=0,
         rotation_constant=rotation,
-        nodes=empty,
-        weights=empty,
-        abel_density=empty,
-        resolution_estimate=0.0,
         torque_deficit=GROSS_SLIP_TORQUE - 1.0 if onset else 0.0,
-        _log_span=math.inf if onset else 0.0,
-        _xi=empty,
-        _xi_weights=empty,
-        _g_chebyshev=np.zeros(1),
+        log_span=math.inf if onset else 0.0,
     )
 
 
