@@ -427,13 +427,18 @@ class SignalHistory:
     def sample_values(self) -> tuple[np.ndarray, np.ndarray]:
         """(omega, cumulative dissipated energy) at every sample of ``signal``."""
         p = self._pieces
-        which = _piece_of_sample(self._signal, self.index, p)
+        which, state = _piece_of_sample(self._signal, self.index, p)
         origin_omega = np.where(p["origin"] >= 0, self.rigid_rotation[np.maximum(p["origin"], 0)], 0.0)
         g, d = p["g"][which], p["d"][which]
         tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, GROSS_SLIP_TORQUE)
         _, omega_m, work = points(tau, self.method, self.n_terms)
-        omega = origin_omega[which] + d * g * omega_m
-        with np.errstate(invalid="ignore"):  # inf - inf after spinning: the energy stays inf
+        with np.errstate(invalid="ignore"):  # inf - inf after spinning (omega: replaced below; energy stays inf)
+            omega = origin_omega[which] + d * g * omega_m
+        # a sample at a turning point where a loop closed exactly is that earlier state (or the mirrored
+        # virgin one): its omega, not the cancellation of two equal increments (nan after spinning)
+        closure = p["exact"][state] & (self._signal == self.torque[state])
+        omega[closure] = self.rigid_rotation[state[closure]]
+        with np.errstate(invalid="ignore"):
             energy = p["energy_before"][which] + g * (work - p["work_start"][which])
         energy = np.where(np.isnan(energy) & np.isinf(p["energy_before"][which]), np.inf, energy)
         return omega, energy
@@ -537,6 +542,7 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
         "end": pieces["end"],
         "first": pieces["first"],
         "count": pieces["count"],
+        "exact": closing != -2,
     }
     return SignalHistory(
         samples=int(values.size),
@@ -676,8 +682,8 @@ def _cycles(torque: np.ndarray, walk: dict):
     return ranges, means, counts, walk["closed_state"]
 
 
-def _piece_of_sample(values: np.ndarray, index: np.ndarray, pieces: dict) -> np.ndarray:
-    """The piece each sample lies on (samples of a step between two turning points, split at loop closures).
+def _piece_of_sample(values: np.ndarray, index: np.ndarray, pieces: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The piece and the step (state) of each sample: the samples of a step, split at its loop closures.
 
     The samples of step k (after turning point k - 1, up to k) are monotonic; those beyond
     the end of a closing piece (in the direction of the step) lie on the next piece.  The
@@ -701,4 +707,4 @@ def _piece_of_sample(values: np.ndarray, index: np.ndarray, pieces: dict) -> np.
         out[active] += 1
         passed += 1
         active = active[count[state[active]] > passed + 1]
-    return out
+    return out, state
