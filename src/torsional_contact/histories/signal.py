@@ -9,7 +9,7 @@ Units: T* = 2T/(f F a); omega in f p0 / mu; energies in (f p0)^2 a^3 / mu.
 1. the signal is reduced to its turning points (first sample, reversals, last sample;
    repeated samples merged, the index of a turning point is the first sample that
    reaches it);
-2. one pass over the turning points (``_walk``, plain Python on floats: the only loop)
+2. one pass over the turning points (``stack_walk.walk``, plain Python on floats: the only loop)
    runs the stack of rule 4 on the torques alone and records the closed loops (which
    remembered points each erased) and, for every state, the newest remembered turning
    point after it; a remembered point also records the point remembered under it, so
@@ -48,31 +48,7 @@ package, with ties.  When the amplitude grows later, the memory rules close the 
 from T_1 at -T_1 where ASTM closes it at its first sample; the loops then differ from
 ASTM's only by loops that involve the oldest remembered point.
 
-Hysteresis gate
----------------
-``gated_signal`` (``gate`` in ``analyse_signal``, ``--gate`` on the command line) removes
-every reversal smaller than a torque range ``gate`` before the memory rules (hysteresis,
-or rainflow, filtering), scanning the turning points from the virgin torque 0.  Until the
-torque has spanned ``gate`` nothing is kept; then the earlier of the two extremes so far
-becomes the first turning point T_1 (kept only if its half loop, of range 2 |T_1|,
-reaches the gate; otherwise the loading goes straight on to the other extreme: beyond
--T_1 the states are the same) and the later one the tentative extreme.  From there a
-turning point beyond the tentative extreme (in the direction of its leg) replaces it;
-one at least ``gate`` back from it makes it final and becomes the tentative one; any
-other is dropped with the excursion it ends.  The last tentative extreme ends the gated
-history (a final excursion smaller than ``gate`` is dropped); a signal that never spans
-``gate`` becomes one loading to its torque farthest from 0.
-
-What this changes: at each sample the gated signal is the running extreme of the samples
-since the last kept turning point (a monotonic path through the kept extremes), and after
-the last one it holds that torque; it stays within ``gate`` of the measured torque.  Its
-loops are exactly the loops of the signal whose range is at least ``gate``: every smaller
-loop is cut out, nothing else changes (``tests/test_history_signal.py`` checks this on
-random signals with ties).  For a gate <= 2 the states at the kept turning points are
-those of the signal itself (the loops cut out never slip: they return exactly to where
-they started and dissipate nothing); what changes is the path inside the small
-excursions, and the end of the record if it ends inside one.  A gate above 2 also cuts
-out slipping loops, and the energy they dissipate.
+Hysteresis gate: ``histories.gate`` (``gate`` in ``analyse_signal``, ``--gate``).
 
 ``sample_values`` gives omega and the cumulative dissipated energy at every sample: each
 sample lies on one piece, whose origin, factor and energy offset are known.
@@ -88,7 +64,10 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
+from . import stack_walk
+from .gate import MAX_GATE, gated_signal
 from .monotonic import points, resolve
+from .samples import turning_point_indices, validated_signal
 
 __all__ = [
     "validated_signal",
@@ -101,134 +80,10 @@ __all__ = [
     "MIN_BIN_WIDTH",
 ]
 
-#: Largest torque range of a signal in [-4/3, 4/3]: the largest meaningful gate and bin width.
-MAX_GATE = 2 * GROSS_SLIP_TORQUE
 #: Smallest bin width of ``SignalHistory.rainflow_bins`` (finer bins would hold one loop each).
 MIN_BIN_WIDTH = 1e-6
 
 
-def validated_signal(name: str, signal) -> np.ndarray:
-    """``signal`` as a 1-d float array of finite torques in [-4/3, 4/3] (rounding beyond 4/3 clipped).
-
-    Raises
-    ------
-    ValueError
-        Naming ``name[i]`` of the first bad sample (not a real number, not finite, or
-        |T*| > 4/3), or for an empty signal.
-    """
-    if isinstance(signal, (str, bytes)):
-        raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {signal!r}")
-    try:
-        values = np.asarray(signal)
-    except (TypeError, ValueError):  # ragged input: the element-wise check names the culprit
-        values = np.asarray(validation.torque_sequence(name, signal), dtype=float)
-    if values.dtype.kind not in "fiu":
-        values = np.asarray(validation.torque_sequence(name, signal), dtype=float)
-    values = values.astype(float, copy=False).ravel()
-    if values.size == 0:
-        raise ValueError(f"{name} must contain at least one torque in [-4/3, 4/3]")
-    limit = GROSS_SLIP_TORQUE * (1.0 + validation.TORQUE_TOLERANCE)
-    bad = ~(np.abs(values) <= limit)  # nan compares False
-    if bad.any():
-        i = int(np.argmax(bad))
-        validation.torque(f"{name}[{i}]", values[i].item())  # raises the canonical message
-    return np.clip(values, -GROSS_SLIP_TORQUE, GROSS_SLIP_TORQUE)
-
-
-def turning_point_indices(values: np.ndarray) -> np.ndarray:
-    """Sample indices of the turning points: the first sample, every reversal, the last value reached.
-
-    Runs of equal samples count once, at their first sample.
-    """
-    values = np.asarray(values, dtype=float)
-    starts = np.concatenate([[0], np.flatnonzero(np.diff(values) != 0) + 1])
-    if starts.size <= 2:
-        return starts
-    step = np.sign(np.diff(values[starts]))
-    reversals = np.flatnonzero(step[1:] != step[:-1]) + 1
-    return starts[np.concatenate([[0], reversals, [starts.size - 1]])]
-
-
-# --------------------------------------------------------------------------- the gate
-def _hysteresis_filter(torques: list[float], gate: float) -> list[int]:
-    """Positions of the turning points kept by the gate; ``torques[0]`` is the virgin torque 0 (module docstring)."""
-    n = len(torques)
-    low = high = 0  # until the torque has spanned ``gate``: the extremes so far
-    i = 1
-    while i < n:
-        x = torques[i]
-        if x > torques[high]:
-            high = i
-        elif x < torques[low]:
-            low = i
-        i += 1
-        if torques[high] - torques[low] >= gate:
-            break
-    else:  # never a span of ``gate``: one monotonic loading to the torque farthest from zero
-        far = high if torques[high] >= -torques[low] else low
-        return [0] if far == 0 else [0, far]
-    first, tentative = (high, low) if high < low else (low, high)
-    # a first extreme T_1 is kept only if its half loop (T_1 -> -T_1, range 2 |T_1|) reaches the gate;
-    # otherwise the loading goes straight to the other extreme (beyond -T_1: the same states from there)
-    kept = [0, first, tentative] if first != 0 and 2.0 * abs(torques[first]) >= gate else [0, tentative]
-    extreme = torques[tentative]
-    leg = 1.0 if extreme > torques[kept[-2]] else -1.0
-    for j in range(i, n):
-        x = torques[j]
-        if leg * (x - extreme) > 0:  # beyond the tentative extreme: it moves
-            kept[-1] = j
-            extreme = x
-        elif leg * (extreme - x) >= gate:  # a reversal of at least ``gate``: the tentative extreme is kept
-            kept.append(j)
-            extreme, leg = x, -leg
-    return kept
-
-
-def gated_signal(signal, gate, *, name: str = "signal", gate_name: str = "gate") -> np.ndarray:
-    """The signal with every reversal smaller than the torque range ``gate`` removed (module docstring).
-
-    Parameters
-    ----------
-    signal : array_like
-        T* samples in [-4/3, 4/3], the history starting from the virgin interface (T* = 0).
-    gate : float
-        Torque range in [0, 8/3]; 0 returns the (validated) signal unchanged.
-
-    Returns
-    -------
-    ndarray
-        One torque per sample, within ``gate`` of the sample: between two kept turning points
-        (the virgin state counts as the first) the running extreme of the samples since the
-        first one, after the last kept turning point its torque.
-
-    Raises
-    ------
-    ValueError
-        For a bad sample (naming ``name[i]``) or a gate outside [0, 8/3] (naming ``gate_name``).
-    """
-    gate = validation.real_number(gate_name, gate, 0.0, MAX_GATE)
-    values = validated_signal(name, signal)
-    if gate == 0.0:
-        return values
-    path = np.concatenate([[0.0], values])  # the history starts at the virgin torque
-    index = turning_point_indices(path)
-    kept = index[_hysteresis_filter(path[index].tolist(), gate)]
-    out = np.empty_like(path)
-    stop = int(kept[-1])
-    out[stop:] = path[stop]
-    if kept.size >= 2:
-        leg = np.repeat(np.arange(kept.size - 1), np.diff(kept))  # leg of each sample before the last kept one
-        sense = np.sign(np.diff(path[kept]))[leg]
-        # the running extreme within each leg: ranks of (leg, sense * value) are ordered leg by leg,
-        # so one running maximum of the ranks never crosses a leg boundary (exact: no arithmetic)
-        order = np.lexsort((sense * path[:stop], leg))
-        rank = np.empty(stop, dtype=np.int64)
-        rank[order] = np.arange(stop)
-        out[:stop] = path[order[np.maximum.accumulate(rank)]]
-    return out[1:]
-
-
-# --------------------------------------------------------------------------- states
 class RememberedPoints(Sequence):
     """The remembered turning points of every state, oldest first, as tuples of state numbers.
 
@@ -427,7 +282,7 @@ class SignalHistory:
     def sample_values(self) -> tuple[np.ndarray, np.ndarray]:
         """(omega, cumulative dissipated energy) at every sample of ``signal``."""
         p = self._pieces
-        which, state = _piece_of_sample(self._signal, self.index, p)
+        which, state = stack_walk.piece_of_sample(self._signal, self.index, p)
         origin_omega = np.where(p["origin"] >= 0, self.rigid_rotation[np.maximum(p["origin"], 0)], 0.0)
         g, d = p["g"][which], p["d"][which]
         tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, GROSS_SLIP_TORQUE)
@@ -498,8 +353,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     torque = values[index]
     n = index.size
     direction = np.sign(np.diff(torque, prepend=0.0)).astype(np.int64)
-    walk = _walk(torque, direction)
-    pieces = _assemble_pieces(torque, direction, walk)
+    walk = stack_walk.walk(torque, direction)
+    pieces = stack_walk.assemble_pieces(torque, direction, walk)
     last = pieces["last"]
 
     _, _, work_a = points(pieces["tau_a"], method, n_terms)
@@ -525,11 +380,11 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     earlier = np.flatnonzero(closing >= 0)
     source[earlier] = closing[earlier]
     delta[earlier] = 0.0
-    rotation = _accumulate(source.tolist(), delta.tolist())
+    rotation = stack_walk.accumulate(source.tolist(), delta.tolist())
     for k in earlier.tolist():  # increasing: an earlier exact closure is resolved first
         front[k] = front[closing[k]]
 
-    ranges, means, counts, states = _cycles(torque, walk)
+    ranges, means, counts, states = stack_walk.cycles(torque, walk)
     piece_energy_before = np.concatenate([[0.0], np.cumsum(piece_work)[:-1]])
     sample_pieces = {
         "origin": pieces["origin"],
@@ -568,143 +423,3 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
         _pieces=sample_pieces,
         _signal=values,
     )
-
-
-def _walk(torque: np.ndarray, direction: np.ndarray) -> dict:
-    """Rule 4 on the torques alone: the loops closed and the remembered points of every state.
-
-    Returns arrays: per loop closed, ``closed_state`` (the state whose step closed it),
-    ``closed_origin`` (the branch's origin T_k, a state number) and ``closed_limit``
-    (T_(k-1), or -1 for the mirrored virgin curve at -T_1); per state ``top``, ``depth``
-    and ``below`` (``SignalHistory.memory_top`` etc.).
-    """
-    t = torque.tolist()
-    d = direction.tolist()
-    n = len(t)
-    push = [False] + ((direction[:-1] != 0) & (direction[1:] != direction[:-1])).tolist()
-    stack: list[int] = []  # state numbers of the remembered turning points
-    limits: list[float] = []  # the torque at which the branch from each of them closes
-    top, depth, below = [-1] * n, [0] * n, [-1] * n
-    closed_state, closed_origin, closed_limit = [], [], []
-    for k in range(n):
-        tk, dk = t[k], d[k]
-        if push[k]:  # a reversal at state k - 1: it is remembered
-            if stack:
-                below[k - 1] = stack[-1]
-                limits.append(t[stack[-1]])
-            else:
-                limits.append(-t[k - 1])
-            stack.append(k - 1)
-        while limits and dk * (tk - limits[-1]) >= 0:  # reaching the limit closes the loop (ties included)
-            limit = limits.pop()
-            closed_state.append(k)
-            closed_origin.append(stack.pop())
-            if stack:
-                closed_limit.append(stack.pop())
-                limits.pop()
-            else:
-                closed_limit.append(-1)
-            if limit == tk:  # exactly at the earlier state: the step ends there
-                break
-        if stack:
-            top[k] = stack[-1]
-            depth[k] = len(stack)
-    return {
-        "closed_state": np.array(closed_state, dtype=np.int64),
-        "closed_origin": np.array(closed_origin, dtype=np.int64),
-        "closed_limit": np.array(closed_limit, dtype=np.int64),
-        "top": np.array(top, dtype=np.int64),
-        "depth": np.array(depth, dtype=np.int64),
-        "below": np.array(below, dtype=np.int64),
-    }
-
-
-def _assemble_pieces(torque: np.ndarray, direction: np.ndarray, walk: dict) -> dict:
-    """The stretches of branches crossed by every step, in order (module docstring, step 3).
-
-    A step k crosses one piece per loop it closes (origin T_k of the loop, ending at its
-    limit) and, unless it ends exactly at a limit, a last piece from the newest remembered
-    point (or the virgin curve) to T_k.  ``limit`` is -2 for those last pieces.
-    """
-    n = torque.size
-    c_state, c_origin, c_limit = walk["closed_state"], walk["closed_origin"], walk["closed_limit"]
-    c_end = np.where(c_limit >= 0, torque[np.maximum(c_limit, 0)], -torque[c_origin])
-    exact = np.zeros(n, dtype=bool)
-    exact[c_state[c_end == torque[c_state]]] = True
-    closures = np.bincount(c_state, minlength=n)
-    count = closures + ~exact
-    first = np.cumsum(count) - count
-    total = int(count.sum())
-    state = np.repeat(np.arange(n), count)
-    origin = np.empty(total, dtype=np.int64)
-    limit = np.empty(total, dtype=np.int64)
-    end = np.empty(total)
-    position = first[c_state] + (np.arange(c_state.size) - (np.cumsum(closures) - closures)[c_state])
-    origin[position], limit[position], end[position] = c_origin, c_limit, c_end
-    final = np.flatnonzero(~exact)
-    position = first[final] + closures[final]
-    origin[position], limit[position], end[position] = walk["top"][final], -2, torque[final]
-    start = np.concatenate([[0.0], end[:-1]])
-    on_branch = origin >= 0
-    origin_torque = np.where(on_branch, torque[np.maximum(origin, 0)], 0.0)
-    g = np.where(on_branch, 2.0, 1.0)
-    return {
-        "state": state,
-        "origin": origin,
-        "origin_torque": origin_torque,
-        "limit": limit,
-        "end": end,
-        "g": g,
-        "tau_a": np.abs(start - origin_torque) / g,
-        "tau_b": np.minimum(np.abs(end - origin_torque) / g, GROSS_SLIP_TORQUE),
-        "first": first,
-        "count": count,
-        "last": first + count - 1,
-    }
-
-
-def _accumulate(source: list[int], delta: list[float]) -> np.ndarray:
-    """x_k = x_source[k] + delta_k (source[k] < k, -1: 0), in order: omega along the chain of origins."""
-    x = [0.0] * (len(delta) + 1)  # x[-1] stays 0: the virgin state
-    for k, (s, dk) in enumerate(zip(source, delta, strict=True)):
-        x[k] = x[s] + dk
-    return np.array(x[:-1])
-
-
-def _cycles(torque: np.ndarray, walk: dict):
-    """Range, mean, count and closing state of every loop closed (module docstring)."""
-    s1, s2 = walk["closed_origin"], walk["closed_limit"]
-    full = s2 >= 0
-    t1, t2 = torque[s1], torque[np.maximum(s2, 0)]
-    ranges = np.where(full, np.abs(t1 - t2), 2.0 * np.abs(t1))
-    means = np.where(full, 0.5 * (t1 + t2), 0.0)
-    counts = np.where(full, 1.0, 0.5)
-    return ranges, means, counts, walk["closed_state"]
-
-
-def _piece_of_sample(values: np.ndarray, index: np.ndarray, pieces: dict) -> tuple[np.ndarray, np.ndarray]:
-    """The piece and the step (state) of each sample: the samples of a step, split at its loop closures.
-
-    The samples of step k (after turning point k - 1, up to k) are monotonic; those beyond
-    the end of a closing piece (in the direction of the step) lie on the next piece.  The
-    closures of a step are passed in order, so each round compares the samples still
-    moving with the next closure: exact comparisons, no search.
-    """
-    first, count = pieces["first"], pieces["count"]
-    steps = np.diff(index, prepend=-1)
-    steps[-1] += values.size - 1 - index[-1]  # a final run of equal samples stays at the last turning point
-    state = np.repeat(np.arange(index.size), steps)
-    out = first[state]
-    direction = pieces["d"][first]  # the direction of each step (the same on all its pieces)
-    oriented = direction[state] * values
-    active = np.flatnonzero(count[state] > 1)
-    passed = 0
-    while active.size:
-        k = state[active]
-        piece = first[k] + passed
-        beyond = oriented[active] > direction[k] * pieces["end"][piece]
-        active = active[beyond]
-        out[active] += 1
-        passed += 1
-        active = active[count[state[active]] > passed + 1]
-    return out, state
