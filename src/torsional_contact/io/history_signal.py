@@ -22,6 +22,8 @@ from __future__ import annotations
 import contextlib
 import sys
 
+import numpy as np
+
 from .. import validation
 from ..histories.signal import MAX_GATE, MIN_BIN_WIDTH, analyse_signal
 from .signal_files import read_signal, write_table
@@ -105,7 +107,7 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=No
         if output is not None:
             advance("per-sample table")
             omega, energy = result.sample_values()
-            columns = {"sample": _arange(values.size), "torque": values}
+            columns = {"sample": np.arange(values.size), "torque": values}
             if gate > 0.0:
                 columns["gated_torque"] = result.signal
             columns.update(rigid_rotation=omega, dissipated_energy=energy)
@@ -136,12 +138,6 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=No
     if short:
         summary["states"] = result.states()
     return summary
-
-
-def _arange(n: int):
-    import numpy as np
-
-    return np.arange(n)
 
 
 def _finite(value: float):
