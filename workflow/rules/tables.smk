@@ -150,6 +150,8 @@ rule benchmark_histories:
     params:
         samples=config["benchmark_histories"]["samples"],
         cycles=config["benchmark_histories"]["cycles"],
+        reversals=config["benchmark_histories"]["walk_reversals"],
+        seed=config["benchmark_histories"]["seed"],
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
@@ -157,10 +159,11 @@ rule benchmark_histories:
         logfile("benchmark_histories"),
     resources:
         runtime=20,
-        mem_mb=3000,
+        mem_mb=1000,
     shell:
-        "python {input.script} --samples {params.samples} --cycles {params.cycles} --turning-points {params.points}"
-        " --repeats {params.repeats} --json {output.json} --macros {output.macros} > {log} 2>&1"
+        "python {input.script} --samples {params.samples} --cycles {params.cycles} --walk-reversals {params.reversals}"
+        " --seed {params.seed} --turning-points {params.points} --repeats {params.repeats} --json {output.json}"
+        " --macros {output.macros} > {log} 2>&1"
 
 
 rule curve_accuracy:

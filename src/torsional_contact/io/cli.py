@@ -97,8 +97,10 @@ def _cmd_history(args):
     from ..histories import history
 
     if args.signal is None:
-        if args.output is not None:
-            raise UsageError("--output needs --signal (the per-sample table of a sampled signal)")
+        for option, value in (("--output", args.output), ("--states", args.states), ("--gate", args.gate),
+                              ("--bin-width", args.bin_width)):
+            if value is not None:
+                raise UsageError(f"{option} needs --signal (it applies to a sampled signal)")
         torques = validation.torque_sequence("--turning-points", args.turning_points)
         states = history(torques, method=args.method, n_terms=args.n_terms)
         fields = ("traction", "slip", "residual_traction")
@@ -108,6 +110,7 @@ def _cmd_history(args):
     from .history_signal import analyse_file
 
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
+                        states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
                         progress=not args.no_progress, full=args.json)
 
 
@@ -218,7 +221,16 @@ def build_parser() -> argparse.ArgumentParser:
     source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--turning-points", type=real_argument, nargs="+", help="T* after each step, in [-4/3, 4/3]")
     source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line, or a .npy array")
-    p.add_argument("--output", help="with --signal: CSV of the twist and dissipated energy at every sample")
+    p.add_argument("--output", help="with --signal: table of the twist and dissipated energy at every sample "
+                   "(.npz or .npy: binary, for long signals; any other name: CSV)")
+    p.add_argument("--states", help="with --signal: table of the states at every turning point (.npz, .npy or CSV; "
+                   "the JSON lists them only for signals of at most 1000 turning points)")
+    p.add_argument("--gate", type=real_argument, default=None,
+                   help="with --signal: drop reversals smaller than this torque range before the memory rules "
+                   "(hysteresis filter; changes the history: see docs/conventions.md; default 0, none)")
+    p.add_argument("--bin-width", type=real_argument, default=None,
+                   help="with --signal: width in T* of the range and mean bins of the rainflow matrix in the JSON "
+                   "(default: exact grouping up to 1000 turning points, else 0.05)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
     p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")

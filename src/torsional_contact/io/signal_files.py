@@ -7,6 +7,12 @@ finite number in [-4/3, 4/3]; the first line that does not is named in the Value
 Writing formats the numbers column by column with integer arithmetic (16 significant
 digits, relative rounding error below 1e-15), which is an order of magnitude faster than
 per-number string formatting for the 10^6-row tables of long signals.
+
+Tables of named columns (``write_table``) take their format from the file name: ``.npz``
+(one array per column, exact doubles, plus a ``metadata`` entry: the provenance as a JSON
+string), ``.npy`` (one structured array, a field per column, no metadata), anything else
+CSV (a header of the column names, then the rows).  The binary formats are written and read
+in milliseconds for 10^6 rows and keep every bit; CSV is for people and spreadsheets.
 """
 
 from __future__ import annotations
@@ -18,7 +24,7 @@ import numpy as np
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
 
-__all__ = ["read_signal", "format_columns", "write_sample_table"]
+__all__ = ["read_signal", "format_columns", "write_sample_table", "table_format", "write_table", "read_table"]
 
 _EXPECTED = "one torque T* in [-4/3, 4/3] per line"
 
@@ -175,3 +181,62 @@ def write_sample_table(path, header: str, columns, integer_columns=(), chunk: in
             handle.write(format_columns([c[start : start + chunk] for c in columns], integer_columns))
             if progress is not None:
                 progress(min(chunk, rows - start))
+
+
+# --------------------------------------------------------------------------- tables of named columns
+def table_format(path) -> str:
+    """"npz", "npy" or "csv": the format ``write_table`` uses for ``path`` (by its extension)."""
+    extension = os.path.splitext(os.fspath(path))[1].lower()
+    return {".npz": "npz", ".npy": "npy"}.get(extension, "csv")
+
+
+def write_table(path, columns: dict, *, metadata: dict | None = None, progress=None) -> None:
+    """Write equal-length named ``columns`` to ``path`` atomically, in the format of its extension.
+
+    ``.npz``: one array per column and ``metadata`` (``provenance`` of ``metadata``, a JSON
+    string); ``.npy``: a structured array with one field per column; otherwise CSV with a
+    header of the column names (integer columns as integers, ``write_sample_table``).
+    ``progress(rows)`` is called as CSV rows are written.
+    """
+    import json
+
+    from ..provenance import atomic_path, provenance
+
+    names = list(columns)
+    arrays = [np.asarray(columns[name]) for name in names]
+    kind = table_format(path)
+    if kind == "csv":
+        integer_columns = tuple(j for j, a in enumerate(arrays) if a.dtype.kind in "iub")
+        write_sample_table(path, ",".join(names), arrays, integer_columns=integer_columns, progress=progress)
+        return
+    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
+        if kind == "npz":
+            record = provenance(**(metadata or {}))
+            np.savez(handle, **dict(zip(names, arrays, strict=True)), metadata=np.array(json.dumps(record)))
+        else:
+            table = np.empty(arrays[0].size, dtype=[(name, a.dtype) for name, a in zip(names, arrays, strict=True)])
+            for name, a in zip(names, arrays, strict=True):
+                table[name] = a
+            np.save(handle, table, allow_pickle=False)
+    if progress is not None:
+        progress(arrays[0].size)
+
+
+def read_table(path) -> dict:
+    """The columns of a table written by ``write_table`` (and ``metadata`` of an ``.npz``, a dict)."""
+    import json
+
+    kind = table_format(path)
+    if kind == "npz":
+        with np.load(path, allow_pickle=False) as data:
+            out = {name: data[name] for name in data.files if name != "metadata"}
+            if "metadata" in data.files:
+                out["metadata"] = json.loads(str(data["metadata"]))
+            return out
+    if kind == "npy":
+        table = np.load(path, allow_pickle=False)
+        return {name: table[name] for name in table.dtype.names}
+    with open(path, encoding="utf-8") as handle:
+        names = handle.readline().strip().split(",")
+    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: rows[:, j] for j, name in enumerate(names)}
