@@ -88,14 +88,18 @@ def walk(targets) -> Walk:
                 np.array(end), np.array(first, dtype=int), np.array(count, dtype=int))
 
 
-def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch) -> tuple[np.ndarray, np.ndarray,
-                                                                                     np.ndarray]:
-    """Torque and slope dT/du at twists ``u`` of samples on segments ``segment`` (``walk``'s pieces).
+def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobian: bool = False):
+    """Torque and slope dT/du at twists ``u`` (from the virgin state) of samples on segments ``segment``.
 
-    ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v.  A sample beyond either end
-    of its segment is evaluated on the nearest piece, continued (the branch's own smooth
-    continuation: a noisy sample next to a turning point).  Also returns the torques at the
-    turning points.
+    ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v, and with ``jacobian`` also the
+    derivatives of F with respect to its own parameters (an (n, q) array).  A sample beyond
+    either end of its segment is evaluated on the nearest piece, continued (the branch's own
+    smooth continuation: a noisy sample next to a turning point).
+
+    Returns (torque, slope, turning-point torques), and with ``jacobian`` the derivatives of the
+    torque at every sample (n, q + 1 + M) with respect to the skeleton's parameters, the twist of
+    the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
+    twists (``path.targets[:M]``; the last target only bounds the last segment).
     """
     n_turning = path.targets.size - 1
     # torques at the turning points: T_j = T(origin) + d g F(d (U_j - u_origin) / g), in order
@@ -103,7 +107,8 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch) -> tupl
     o = path.origin[last]
     u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
     gain = path.g[last] * path.direction[last]
-    increments = gain * branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])[0]
+    at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
+    increments = gain * at_turning[0]
     turning = np.empty(n_turning)
     for j in range(n_turning):
         turning[j] = (turning[o[j]] if o[j] >= 0 else 0.0) + increments[j]
@@ -114,9 +119,26 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch) -> tupl
     for m in range(int(path.count.max()) - 1):  # piece ends increase along the segment
         end = path.end[np.minimum(start + m, path.end.size - 1)]
         piece += (path.count[segment] > m + 1) & (heading * u > heading * end)
-    o = path.origin[piece]
+    origin = path.origin[piece]
     d, g = path.direction[piece], path.g[piece]
-    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
-    t_origin = np.where(o >= 0, turning[np.maximum(o, 0)] if n_turning else 0.0, 0.0)
-    value, slope = branch(d * (u - u_origin) / g)
-    return t_origin + d * g * value, slope, turning
+    known = origin >= 0
+    u_origin = np.where(known, path.targets[np.maximum(origin, 0)], 0.0)
+    t_origin = np.where(known, turning[np.maximum(origin, 0)], 0.0) if n_turning else np.zeros(u.size)
+    values = branch(d * (u - u_origin) / g)
+    torque = t_origin + d * g * values[0]
+    if not jacobian:
+        return torque, values[1], turning
+    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
+    q = at_turning[2].shape[1]
+    columns = q + 1 + n_turning
+    grad_turning = np.zeros((n_turning, columns))
+    for j in range(n_turning):
+        row = grad_turning[o[j]].copy() if o[j] >= 0 else np.zeros(columns)
+        row[:q] += gain[j] * at_turning[2][j]
+        row[q + 1 + j] += at_turning[1][j]
+        row[q + 1 + o[j] if o[j] >= 0 else q] -= at_turning[1][j]
+        grad_turning[j] = row
+    jac = grad_turning[np.maximum(origin, 0)] * known[:, None] if n_turning else np.zeros((u.size, columns))
+    jac[:, :q] += (d * g)[:, None] * values[2]
+    jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
+    return torque, values[1], turning, jac
