@@ -379,7 +379,9 @@ def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False):
         return value, seen
     out = {}
     for key, item in value.items():
-        if key in SI_UNITS and (item is None or isinstance(item, (int, float, list))) and not isinstance(item, bool):
+        counts = key in ("turning_points", "slip_fronts") and not isinstance(item, list)  # a summary's count
+        if key in SI_UNITS and not counts and (item is None or isinstance(item, (int, float, list))) \
+                and not isinstance(item, bool):
             try:
                 out[key] = _scaled(item, _factor(key, specimen))
                 seen.add(key)
