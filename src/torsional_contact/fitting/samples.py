@@ -42,7 +42,7 @@ def _channel(name: str, values) -> np.ndarray:
     bad = ~np.isfinite(array)
     if bad.any():
         i = int(np.argmax(bad))
-        raise ValueError(f"{name}[{i}] must be a finite number, got {array[i]!r}")
+        raise ValueError(f"{name}[{i}] must be a finite number, got {float(array[i])!r}")
     return array
 
 
