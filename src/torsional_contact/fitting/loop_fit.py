@@ -52,6 +52,19 @@ covariance is s^2 (J^T J)^-1 (pseudo-inverse: a reversal in stick has no influen
 C, and on 1/G (linear in k, the quantity the loop measures) mapped to G, whose upper end is
 infinite when the interval on 1/G reaches 0.
 
+Limits
+------
+The effective-variance residual is exact to first order in the noise.  Its second-order term
+is a bias of about (1/2) (s / w) s per sample, where s is the twist noise (the torque noise
+counted through C) and w the scale on which the loop bends: the contact's twist amplitude
+k omega(max T*), or k omega(4/3 - 1e-3) = 0.9 k for a gross-slip loop (its knee).  Over the N_b
+samples where the loop bends (slope between 2 % and 98 % of the elastic one) that is about
+(1/2)(s / w) sqrt(N_b) standard errors.  When it
+exceeds ``NOISE_LIMIT`` (one standard error) the estimates are biased and the intervals too
+narrow (the coverage study shows by how much): the result is flagged ``noise_limited`` and a
+``NoiseLimitedFitWarning`` is raised.  Gross-slip loops, whose contact twist is large, are not
+affected; partial-slip loops need a twist resolution well below the contact's twist.
+
 Identifiability
 ---------------
 A loop whose every torque stays below the slip onset has no hysteresis: the twist is linear
@@ -59,13 +72,17 @@ in the torque and only C, theta_0 are defined.  The fit compares the full model 
 linear one (stick): when the decrease of the residual sum, in units of the residual variance,
 is below the 95 % point of chi-square with 2 degrees of freedom (5.99), the loop shows no slip
 and the result gives no friction value, only the bound f >= 2 max|T| / (F a) that full stick
-implies, and no modulus.  With slip, G is reported only when its interval excludes infinity
-(the contact's twist k is resolved from zero); otherwise only its lower bound.
+implies (``lower_bound``), and no modulus.  A slip too small to detect is not excluded by the
+record, so the ``interval`` of f is the weaker bound that holds whatever G: the torque never
+exceeded the gross-slip torque, f >= 1.5 (max|T| - 2 s_T) / (F a).  With slip, G is reported
+only when its interval excludes infinity (the contact's twist k is resolved from zero);
+otherwise only its lower bound.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -73,6 +90,8 @@ from scipy import optimize, stats
 
 from .. import units
 from ..criteria import GROSS_SLIP_TORQUE
+from ..curves import monotonic_curves
+from ..diagnostics import NoiseLimitedFitWarning
 from .masing import torque_along, walk
 from .samples import checked_loop, noise_level, reversal_threshold, turning_points
 from .skeleton import Skeleton
@@ -84,9 +103,16 @@ STICK_TEST_QUANTILE = float(stats.chi2.ppf(0.95, 2))
 #: Largest kappa = k / (C T_s): C holds at least the shaft over the gauge length L, L / (G J), so kappa <= 2 a / L,
 #: and the twist formula needs sections about 2 a or more from the interface (L >= 4 a, kappa <= 0.5); 2 leaves room.
 KAPPA_MAX = 2.0
+#: Evaluations per least-squares pass: enough for any loop with slip (about 10-20 are used); a loop in stick,
+#: where T_s and kappa are free to wander, stops here (the stick test then errs towards "no slip").
+MAX_EVALUATIONS = 60
 #: The starting grid: T_s / max|T| (0.75: a gross-slip plateau) and kappa.
 START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
 START_KAPPAS = (0.02, 0.2, 1.0)
+#: The bend of a gross-slip loop: its knee ends where omega_m = 0.9 (T* = 4/3 - 1e-3), beyond it lies the plateau.
+KNEE_TORQUE = GROSS_SLIP_TORQUE - 1e-3
+#: Largest expected second-order bias (in standard errors) of an estimate that is not flagged as noise limited.
+NOISE_LIMIT = 1.0
 #: Samples whose slope dT/dtheta is at least this fraction of the elastic 1/C count in ``residual_rms``.
 PLATEAU_SLOPE = 0.5
 
@@ -134,6 +160,9 @@ class LoopFit:
         "stick", "partial-slip" or "gross-slip": the largest |T*| the fitted loop reaches.
     slip_detected : bool
     stick_test : float
+    noise_limited : bool
+        The twist noise is too large against the contact's twist for the intervals to be trusted
+        (module docstring, "Limits"); a ``NoiseLimitedFitWarning`` was raised.
         Decrease of the residual sum from stick to the full model, in residual variances.
     message : str
     samples, reversals, dof : int
@@ -153,6 +182,7 @@ class LoopFit:
     regime: str
     slip_detected: bool
     stick_test: float
+    noise_limited: bool
     message: str
     samples: int
     reversals: int
@@ -176,6 +206,7 @@ class LoopFit:
             "regime": self.regime,
             "slip_detected": self.slip_detected,
             "stick_test": _json(self.stick_test),
+            "noise_limited": self.noise_limited,
             "message": self.message,
             "samples": self.samples,
             "reversals": self.reversals,
@@ -229,14 +260,18 @@ class _Model:
     def weights(self, p):
         """1 / sqrt(s_T^2 + (dT/dtheta)^2 s_theta^2): the effective-variance weights at ``p``."""
         slope = self.evaluate(p)[1]
-        return 1.0 / np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+        with np.errstate(over="ignore"):  # a trial C -> 0 makes the slope overflow: weight 0
+            return 1.0 / np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
 
     def linear_weights(self, compliance):
         return np.full(self.torque.size, 1.0 / math.sqrt(self.torque_noise**2 + (self.twist_noise / compliance) ** 2))
 
 
-def _least_squares(model: _Model, start, lower, upper, passes: int = 3):
-    """Effective-variance least squares: weights fixed per pass, updated from the solution (IRLS)."""
+def _least_squares(model: _Model, start, lower, upper, passes: int = 3, stop=None):
+    """Effective-variance least squares: weights fixed per pass, updated from the solution (IRLS).
+
+    ``stop(result)``: end after a pass for which it is true (a loop plainly in stick).
+    """
     p = np.asarray(start, dtype=float)
     result = None
     for _ in range(passes):
@@ -249,10 +284,12 @@ def _least_squares(model: _Model, start, lower, upper, passes: int = 3):
             return -w[:, None] * model.evaluate(q, jacobian=True)[3]
 
         result = optimize.least_squares(fun, np.clip(p, lower, upper), jac=jac, bounds=(lower, upper),
-                                        x_scale="jac", method="trf")
-        change = np.max(np.abs(result.x - p) / np.maximum(np.sqrt(np.diag(_covariance(result.jac, 1.0))), 1e-300))
+                                        x_scale="jac", method="trf", max_nfev=MAX_EVALUATIONS)
+        with np.errstate(over="ignore", divide="ignore"):
+            change = np.max(np.abs(result.x - p) / np.maximum(np.sqrt(np.diag(_covariance(result.jac, 1.0))), 1e-300))
         p = result.x
-        if change < 0.05:  # the parameters moved by less than 0.05 standard errors: the weights are settled
+        # settled: the parameters moved by less than 0.05 standard errors, or the caller's verdict is plain
+        if change < 0.05 or (stop is not None and stop(result)):
             break
     return result
 
@@ -333,9 +370,14 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     upper = np.full(start.size, np.inf)
     lower[:3] = [1e-9 * peak, 0.0, linear.x[0] * 1e-6]
     upper[1] = KAPPA_MAX
-    full = _least_squares(model, start, lower, upper)
-    chi2 = float(np.sum(full.fun**2))
     dof = n - start.size
+
+    def plainly_stick(result):  # far below the slip test's threshold: more passes cannot change the verdict
+        chi2_full = float(np.sum(result.fun**2))
+        return (chi2_linear - chi2_full) / (chi2_full / dof) < 0.25 * STICK_TEST_QUANTILE
+
+    full = _least_squares(model, start, lower, upper, stop=plainly_stick)
+    chi2 = float(np.sum(full.fun**2))
     scale2 = chi2 / dof
     stick_test = (chi2_linear - chi2) / scale2
 
@@ -344,19 +386,22 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         cov = _covariance(linear.jac, chi2_linear / (n - 2))
         se = np.sqrt(np.diag(cov))
         bound = 2.0 * peak / (force * a)
+        proven = 1.5 * max(peak - 2.0 * s_t, 0.0) / (force * a)  # |T*| <= 4/3 whatever G: the torque was carried
         return LoopFit(
-            friction=Estimate(None, None, (bound, None), identified=False, lower_bound=bound),
+            friction=Estimate(None, None, (proven, None), identified=False, lower_bound=bound),
             shear_modulus=Estimate(None, None, (None, None), identified=False),
             compliance=Estimate(float(compliance), float(se[0]), _wald(compliance, se[0], t_of(n - 2))),
             twist_offset=Estimate(float(offset), float(se[1]), _wald(offset, se[1], t_of(n - 2))),
             correlation=None,
             residual_rms=float(np.sqrt(np.mean((twist - offset - compliance * torque) ** 2))),
             torque_residual_rms=float(np.sqrt(np.mean((torque - (twist - offset) / compliance) ** 2))),
-            noise_scale=math.sqrt(chi2_linear / (n - 2)), regime="stick", slip_detected=False,
+            noise_scale=math.sqrt(chi2_linear / (n - 2)), regime="stick", slip_detected=False, noise_limited=False,
             stick_test=stick_test, dof=n - 2, fitted_torque=(twist - offset) / compliance,
             message=(f"no slip detected (the full model lowers the residual sum by {stick_test:.2f} residual "
                      f"variances, below {STICK_TEST_QUANTILE:.2f}): the loop is linear, without hysteresis; if the "
-                     f"interface stuck throughout, |T*| <= 1 gives f >= 2 max|T| / (F a) = {bound:.4g}; "
+                     f"interface stuck throughout, |T*| <= 1 gives f >= 2 max|T| / (F a) = {bound:.4g} "
+                     f"(lower_bound); a slip too small to detect is not excluded, and what the record proves "
+                     f"whatever G is |T*| <= 4/3: f >= 1.5 (max|T| - 2 s_T) / (F a) = {proven:.4g} (interval); "
                      "G is not identified"),
             **common)
 
@@ -387,6 +432,18 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     reached = float(np.max(np.abs(np.append(turning, fitted[-1])))) / slip_torque
     regime = "gross-slip" if reached >= GROSS_SLIP_TORQUE * (1 - 1e-6) else "partial-slip" if reached > 1 else "stick"
     message = f"slip detected ({regime}, max |T*| = {reached:.4f})"
+    # the second-order bias of the effective-variance residual, in standard errors (module docstring, "Limits")
+    knee = min(reached, KNEE_TORQUE)
+    contact = kappa * compliance * slip_torque * float(monotonic_curves().rotation(knee))
+    noise_twist = math.sqrt(scale2) * math.hypot(s_theta, compliance * s_t)
+    bending = int(np.sum((slope > 0.02 / compliance) & (slope < 0.98 / compliance)))  # the partly slipping samples
+    bias = 0.5 * noise_twist / contact * math.sqrt(bending) if contact > 0 else math.inf
+    noise_limited = bias > NOISE_LIMIT
+    if noise_limited:
+        message += (f"; the twist noise ({noise_twist:.3g} rad) is large against the contact's twist "
+                    f"({contact:.3g} rad): the estimates are biased by about {bias:.1f} standard errors and the "
+                    "intervals are too narrow")
+        warnings.warn(message, NoiseLimitedFitWarning, stacklevel=2)
     if not g_identified:
         message += ("; the contact's twist is not resolved from the noise: G is not identified, only its lower "
                     f"bound {g_lower:.4g} Pa" if g_lower else "; G is not identified")
@@ -399,6 +456,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         residual_rms=float(np.sqrt(np.mean(twist_residual**2))) if twist_residual.size else math.nan,
         torque_residual_rms=float(np.sqrt(np.mean((torque - fitted) ** 2))),
         noise_scale=math.sqrt(scale2), regime=regime, slip_detected=True, stick_test=stick_test, dof=dof,
+        noise_limited=noise_limited,
         fitted_torque=fitted, message=message, **common)
 
 
