@@ -417,7 +417,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     gradient = np.array([0.0, c_g * compliance, c_g * kappa])
     y_se = math.sqrt(max(float(gradient @ cov[:3, :3] @ gradient), 0.0))
     y_lo, y_hi = _wald(y, y_se, t_quantile)
-    g_identified = y_lo > 0
+    g_identified = bool(y_lo > 0)
     g_lower = 1.0 / y_hi if y_hi > 0 else None
     if g_identified:
         modulus = Estimate(1.0 / y, y_se / y**2, (1.0 / y_hi, 1.0 / y_lo))
@@ -438,7 +438,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     noise_twist = math.sqrt(scale2) * math.hypot(s_theta, compliance * s_t)
     bending = int(np.sum((slope > 0.02 / compliance) & (slope < 0.98 / compliance)))  # the partly slipping samples
     bias = 0.5 * noise_twist / contact * math.sqrt(bending) if contact > 0 else math.inf
-    noise_limited = bias > NOISE_LIMIT
+    noise_limited = bool(bias > NOISE_LIMIT)
     if noise_limited:
         message += (f"; the twist noise ({noise_twist:.3g} rad) is large against the contact's twist "
                     f"({contact:.3g} rad): the estimates are biased by about {bias:.1f} standard errors and the "
