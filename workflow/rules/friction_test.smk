@@ -27,3 +27,68 @@ rule friction_test_coverage:
         "python {input.script} --specimen '{params.specimen}' --scenarios '{params.scenarios}'"
         " --draws {params.draws} --cycles {params.cycles} --samples-per-cycle {params.samples}"
         " --seed {params.seed} --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
+# Figures for experimenters (notebooks/friction_test.py, paper/sections/friction_test.tex): the lab
+# specimen and record are committed in notebooks/data/ (made by workflow/scripts/make_lab_loop.py).
+LAB_LOOP = "notebooks/data/lab_loop.csv"
+LAB_TRUTH = "notebooks/data/lab_loop.json"
+
+
+rule fig_lab_loops:
+    input:
+        script="workflow/scripts/fig_lab_loops.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_loops.py"),
+        specimen=LAB_TRUTH,
+    output:
+        **fig("lab_loops", "lab_loops"),
+    params:
+        amplitudes=FRICTION_TEST["figure_amplitudes"],
+    log:
+        logfile("fig_lab_loops"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --specimen {input.specimen} --amplitudes {params.amplitudes}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule fig_lab_regime_map:
+    input:
+        script="workflow/scripts/fig_lab_regime_map.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_regime_map.py"),
+        specimen=LAB_TRUTH,
+    output:
+        **fig("lab_regime_map", "lab_regime_map"),
+    params:
+        max_force=FRICTION_TEST["map_max_force"],
+    log:
+        logfile("fig_lab_regime_map"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --specimen {input.specimen} --max-force {params.max_force}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule fig_lab_fit:
+    input:
+        script="workflow/scripts/fig_lab_fit.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_fit.py"),
+        loop=LAB_LOOP,
+        truth=LAB_TRUTH,
+    output:
+        **fig("lab_fit", "lab_fit"),
+    log:
+        logfile("fig_lab_fit"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --loop {input.loop} --truth {input.truth}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
