@@ -92,3 +92,22 @@ rule fig_lab_fit:
     shell:
         "python {input.script} --loop {input.loop} --truth {input.truth}"
         " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule lab_fit_macros:
+    input:
+        script="workflow/scripts/lab_fit_macros.py",
+        lib=lib("workflow/scripts/lab_fit_macros.py"),
+        loop=LAB_LOOP,
+        truth=LAB_TRUTH,
+    output:
+        json=f"{OUT}/data/lab_fit.json",
+        macros=f"{OUT}/macros/lab_fit.tex",
+    log:
+        logfile("lab_fit_macros"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --loop {input.loop} --truth {input.truth} --json {output.json}"
+        " --macros {output.macros} > {log} 2>&1"
