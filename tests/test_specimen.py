@@ -150,7 +150,7 @@ def test_cli_solve_in_si_units(capsys):
 @pytest.mark.parametrize("args, match", [
     (["solve", "--torque", "1.8 N m", "--radius", "5 mm", "--normal-force", "1 kN", "--friction", "0.6"],
      "--shear-modulus is missing"),
-    (["solve", "--torque", "1.8 N m"], "has a unit: physical units need the specimen options"),
+    (["solve", "--torque", "1.8 N m"], "is not a plain number: values with units need the specimen options"),
     (["solve", "--torque", "1.8 N m", "--radius", "1 kN", "--normal-force", "1 kN", "--friction", "0.6",
       "--shear-modulus", "80 GPa"], "--radius must be a length"),
     (["solve", "--torque", "3 N m", *SPECIMEN_ARGS], "beyond it the cylinders spin"),

@@ -39,7 +39,7 @@ def number_or_quantity(text: str):
     try:
         value = float(text)
     except ValueError:
-        if any(c.isalpha() for c in text.replace("e", "").replace("E", "")) or any(c.isalpha() for c in text):
+        if any(c.isalpha() for c in text):  # a unit: read (and checked) with the specimen
             return text.strip()
         raise argparse.ArgumentTypeError(f"expected a number or a quantity such as '1.8 N m', got {text!r}") from None
     if not math.isfinite(value):
@@ -50,7 +50,7 @@ def number_or_quantity(text: str):
 def plain_number(option: str, value):
     """A normalised value: a float, or ValueError when it carries a unit (the specimen options are missing)."""
     if isinstance(value, str):
-        raise ValueError(f"{option} {value!r} has a unit: physical units need the specimen options "
+        raise ValueError(f"{option} {value!r} is not a plain number: values with units need the specimen options "
                          "--radius, --normal-force, --friction and --shear-modulus")
     return value
 
