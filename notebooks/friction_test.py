@@ -96,7 +96,7 @@ for j, force in enumerate(forces):
     s = Specimen(radius="5 mm", normal_force=force, friction=0.6, shear_modulus="80 GPa")
     for i, t in enumerate(amplitudes):
         regimes[i, j] = regime_code[s.regime(t)]
-        if regimes[i, j] == 1:
+        if regimes[i, j] == 1 and s.energy_per_cycle(t) > 0:  # zero right at the slip onset
             energy[i, j] = s.energy_per_cycle(t)
 fig, ax = plt.subplots(figsize=(5.5, 3.8))
 ax.contourf(forces, amplitudes, regimes, levels=[-0.5, 0.5, 1.5, 2.5], colors=["#d9ecd9", "#fde9c8", "#f6d0d0"])
