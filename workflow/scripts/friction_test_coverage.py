@@ -136,7 +136,6 @@ def main():
         key = r["name"]
         for short, name in (("f", "friction"), ("g", "shear_modulus"), ("c", "compliance")):
             macros[f"ft-{key}-cov-{short}"] = _cell(r[name])
-            err = r[name]["median_abs_rel_error"]
             macros[f"ft-{key}-err-{short}"] = _error(r[name])
         macros[f"ft-{key}-twist-noise"] = sci(r["twist_noise"], 1)
         macros[f"ft-{key}-flagged"] = f"{100 * r['noise_limited']:.0f}"
