@@ -57,6 +57,7 @@ include: "workflow/rules/figures.smk"
 include: "workflow/rules/tables.smk"
 include: "workflow/rules/verification.smk"
 include: "workflow/rules/paper.smk"
+include: "workflow/rules/friction_test.smk"
 include: "workflow/rules/notebooks.smk"
 
 

@@ -2,7 +2,9 @@
 
 The public surface: ``solve`` returns a ``Solution`` with the stick radius b/a, the torque
 T* = 2T/(f F a), the rigid rotation omega (f p0 / mu), the regime and the fields;
-``histories`` applies the memory rules to a torque history.  Conventions and units are in
+``histories`` applies the memory rules to a torque history; ``Specimen`` speaks physical
+units (pint at the boundary) and ``fit_loop`` turns a measured torque-twist loop into a
+friction coefficient and a shear modulus.  Conventions and units are in
 the README ("Conventions and public interface").
 
 Submodules are imported lazily, on first use of a name, so that ``import torsional_contact``
@@ -28,6 +30,8 @@ _EXPORTS = {
     "DEFAULT_METHOD": "solution",
     "DEFAULT_N_TERMS": "solution",
     "history": "histories",
+    "Specimen": "specimen",
+    "fit_loop": "fitting",
     "SLIP_ONSET_TORQUE": "criteria",
     "GROSS_SLIP_TORQUE": "criteria",
     "AccuracyWarning": "diagnostics",

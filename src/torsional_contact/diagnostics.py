@@ -11,6 +11,7 @@ __all__ = [
     "IllConditioningWarning",
     "TruncationWarning",
     "UnphysicalResultWarning",
+    "NoiseLimitedFitWarning",
 ]
 
 
@@ -36,3 +37,7 @@ class TruncationWarning(AccuracyWarning):
 
 class UnphysicalResultWarning(TorsionalContactWarning):
     """A formulation returned a value outside the physics (e.g. the published eq. (38): T* > 4/3)."""
+
+
+class NoiseLimitedFitWarning(AccuracyWarning):
+    """A fitted loop's hysteresis is too small against the measurement noise: biased estimates, narrow intervals."""

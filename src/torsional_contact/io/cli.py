@@ -24,6 +24,7 @@ import numpy as np
 from .. import __version__
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
+from . import cli_units
 
 __all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS",
            "REFERENCE_METHODS"]
@@ -87,6 +88,11 @@ def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
 
 
 def _cmd_solve(args) -> dict:
+    specimen = cli_units.specimen_from(args)
+    if specimen is not None:
+        return cli_units.solve_si(args, specimen)
+    args.torque = cli_units.plain_number("--torque", args.torque)
+    args.stick_radius = cli_units.plain_number("--stick-radius", args.stick_radius)
     solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms)
     return _profiles(solution.as_dict(), solution, args.radii)
 
@@ -95,8 +101,13 @@ def _cmd_history(args):
     """``history``: states at the given turning points, or the analysis of a sampled signal (``--signal``)."""
     from .. import validation
     from ..histories import history
+    from .history_signal import analyse_file
 
+    specimen = cli_units.specimen_from(args)
+    if specimen is not None:
+        return cli_units.history_si(args, specimen, analyse_file)
     if args.signal is None:
+        args.turning_points = [cli_units.plain_number("--turning-points", v) for v in args.turning_points]
         for option, value in (("--output", args.output), ("--states", args.states), ("--gate", args.gate),
                               ("--bin-width", args.bin_width)):
             if value is not None:
@@ -107,8 +118,6 @@ def _cmd_history(args):
         return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
-    from .history_signal import analyse_file
-
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
                         progress=not args.no_progress, full=args.json)
@@ -212,14 +221,18 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("solve", help="solve for a stick radius or a torque")
     group = p.add_mutually_exclusive_group(required=True)
-    group.add_argument("--stick-radius", type=real_argument, help="b/a in [0, 1]")
-    group.add_argument("--torque", type=real_argument, help="T* = 2T/(f F a) in [-4/3, 4/3]")
+    group.add_argument("--stick-radius", type=cli_units.number_or_quantity,
+                       help="b/a in [0, 1]; with the specimen options a length, e.g. '2 mm'")
+    group.add_argument("--torque", type=cli_units.number_or_quantity,
+                       help="T* = 2T/(f F a) in [-4/3, 4/3]; with the specimen options a torque, e.g. '1.8 N m'")
     _add_solver_options(p)
+    cli_units.add_specimen_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
     p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
     source = p.add_mutually_exclusive_group(required=True)
-    source.add_argument("--turning-points", type=real_argument, nargs="+", help="T* after each step, in [-4/3, 4/3]")
+    source.add_argument("--turning-points", type=cli_units.number_or_quantity, nargs="+",
+                        help="T* after each step, in [-4/3, 4/3] (with the specimen options: torques, N m)")
     source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line, or a .npy array")
     p.add_argument("--output", help="with --signal: table of the twist and dissipated energy at every sample "
                    "(.npz or .npy: binary, for long signals; any other name: CSV)")
@@ -233,6 +246,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "(default: exact grouping up to 1000 turning points, else 0.05)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
+    cli_units.add_specimen_options(p)
     p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision solution: the truncated weak form, or (--method fast) "
@@ -250,6 +264,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("errata", help="computed verdicts on the paper's equations and statements")
     p.add_argument("--json", action="store_true", help="print a JSON list, one object per checked statement")
     p.set_defaults(handler=_cmd_errata)
+    cli_units.add_fit_parser(sub, _Parser)
     return parser
 
 

@@ -1,0 +1,144 @@
+r"""The memory rules driven by the twist: the torque a rig measures along any twist history.
+
+The memory rules of ``histories.memory`` (Cattaneo-Mindlin, Masing) are stated for a torque
+history: a branch from a turning point (T_k, theta_k) is theta - theta_k = d g Theta(|T - T_k|
+/ g), with Theta the monotonic (skeleton) twist of ``fitting.skeleton``, g = 2 on a branch and
+g = 1 on the virgin curve, and loops close where a branch reaches the previous turning point
+(or, from the first one, its mirror image).  Along every branch the twist is a strictly
+increasing function of the torque, so the same rules hold with the roles exchanged:
+
+    T - T_k = d g F(|theta - theta_k| / g),    F = Theta^(-1),
+
+and a branch reaches a turning point's torque exactly when it reaches its twist.  The stack of
+remembered turning points, the loop closures and the pieces of each branch therefore depend
+on the twists alone; the torque follows by one evaluation of F per sample.  F saturates at the
+gross-slip torque 2 f F a / 3 as the twist grows: a twist-controlled rig's gross-slip plateau
+is the far end of the same branches, with no special case (the spinning state erases the
+memory because its torque exceeds every remembered one; so does the long branch here).
+
+``walk`` does the bookkeeping on the turning-point twists; ``torque_along`` evaluates the
+torque and its slope dT/dtheta at every sample.  ``tests/test_fit.py`` checks both against the
+torque-driven ``histories.analyse_signal`` of the same history.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Walk", "walk", "torque_along"]
+
+
+@dataclass(frozen=True)
+class Walk:
+    """Pieces of branches along the segments between turning points (``walk``).
+
+    Twists u are measured from the virgin state (u = 0, T = 0).  Piece p lies on the branch
+    from turning point ``origin[p]`` (-1: the virgin curve through 0) with factor ``g[p]`` and
+    direction ``direction[p]``; it ends at twist ``end[p]``.  Segment j runs from turning point
+    j - 1 (the virgin state for j = 0) to ``targets[j]``, over pieces ``first[j]`` to
+    ``first[j] + count[j] - 1``; turning point j (j < number of segments - 1) has its torque on
+    piece ``first[j] + count[j] - 1``.
+    """
+
+    targets: np.ndarray
+    origin: np.ndarray
+    g: np.ndarray
+    direction: np.ndarray
+    end: np.ndarray
+    first: np.ndarray
+    count: np.ndarray
+
+
+def walk(targets) -> Walk:
+    """The memory rules on the turning-point twists ``targets`` (from the virgin state u = 0).
+
+    ``targets[j]`` is where segment j ends: the turning points, then the last twist reached.
+    """
+    u = [float(v) for v in targets]
+    origin, g, direction, end, first, count = [], [], [], [], [], []
+    stack: list[int] = []
+    current, heading = 0.0, 0
+    for j, target in enumerate(u):
+        d = 1 if target > current else -1 if target < current else (-heading or 1)
+        if heading != 0 and d != heading:
+            stack.append(j - 1)  # turning point j - 1 lies at ``current``
+        first.append(len(origin))
+        while True:
+            if stack:
+                o, factor = stack[-1], 2.0
+                limit = u[stack[-2]] if len(stack) >= 2 else -u[stack[-1]]
+                closes = d * (target - limit) >= 0
+            else:
+                o, factor, closes, limit = -1, 1.0, False, target
+            origin.append(o)
+            g.append(factor)
+            direction.append(d)
+            end.append(limit if closes else target)
+            if not closes:
+                break
+            if len(stack) >= 2:  # the inner loop closes and is erased (rule 4)
+                del stack[-2:]
+            else:  # the branch from T_1 meets the mirrored virgin curve at -T_1
+                stack.pop()
+        count.append(len(origin) - first[-1])
+        current, heading = target, d
+    return Walk(np.array(u), np.array(origin, dtype=int), np.array(g), np.array(direction, dtype=float),
+                np.array(end), np.array(first, dtype=int), np.array(count, dtype=int))
+
+
+def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobian: bool = False):
+    """Torque and slope dT/du at twists ``u`` (from the virgin state) of samples on segments ``segment``.
+
+    ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v, and with ``jacobian`` also the
+    derivatives of F with respect to its own parameters (an (n, q) array).  A sample beyond
+    either end of its segment is evaluated on the nearest piece, continued (the branch's own
+    smooth continuation: a noisy sample next to a turning point).
+
+    Returns (torque, slope, turning-point torques), and with ``jacobian`` the derivatives of the
+    torque at every sample (n, q + 1 + M) with respect to the skeleton's parameters, the twist of
+    the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
+    twists (``path.targets[:M]``; the last target only bounds the last segment).
+    """
+    n_turning = path.targets.size - 1
+    # torques at the turning points: T_j = T(origin) + d g F(d (U_j - u_origin) / g), in order
+    last = path.first[:n_turning] + path.count[:n_turning] - 1
+    o = path.origin[last]
+    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
+    gain = path.g[last] * path.direction[last]
+    at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
+    increments = gain * at_turning[0]
+    turning = np.empty(n_turning)
+    for j in range(n_turning):
+        turning[j] = (turning[o[j]] if o[j] >= 0 else 0.0) + increments[j]
+    # the piece of every sample: the first of its segment, plus the piece ends it has passed
+    start = path.first[segment]
+    piece = start.copy()
+    heading = path.direction[start]  # every piece of a segment has its direction
+    for m in range(int(path.count.max()) - 1):  # piece ends increase along the segment
+        end = path.end[np.minimum(start + m, path.end.size - 1)]
+        piece += (path.count[segment] > m + 1) & (heading * u > heading * end)
+    origin = path.origin[piece]
+    d, g = path.direction[piece], path.g[piece]
+    known = origin >= 0
+    u_origin = np.where(known, path.targets[np.maximum(origin, 0)], 0.0)
+    t_origin = np.where(known, turning[np.maximum(origin, 0)], 0.0) if n_turning else np.zeros(u.size)
+    values = branch(d * (u - u_origin) / g)
+    torque = t_origin + d * g * values[0]
+    if not jacobian:
+        return torque, values[1], turning
+    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
+    q = at_turning[2].shape[1]
+    columns = q + 1 + n_turning
+    grad_turning = np.zeros((n_turning, columns))
+    for j in range(n_turning):
+        row = grad_turning[o[j]].copy() if o[j] >= 0 else np.zeros(columns)
+        row[:q] += gain[j] * at_turning[2][j]
+        row[q + 1 + j] += at_turning[1][j]
+        row[q + 1 + o[j] if o[j] >= 0 else q] -= at_turning[1][j]
+        grad_turning[j] = row
+    jac = grad_turning[np.maximum(origin, 0)] * known[:, None] if n_turning else np.zeros((u.size, columns))
+    jac[:, :q] += (d * g)[:, None] * values[2]
+    jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
+    return torque, values[1], turning, jac

@@ -1,0 +1,135 @@
+r"""The torque-twist skeleton of a test rig and its inverse: torque as a function of twist.
+
+A rig measures, between two cross-sections and through its own compliance, the twist
+
+    theta = C T + k omega_m(T / T_s),        T_s = f F a / 2,  k = 2 f p0 / mu,
+
+on a monotonic loading from the virgin state (docs/conventions.md: T* = T / T_s, omega in
+f p0 / mu, and the twist of the specimen is (f p0 / mu)(T* L / a + 2 omega); its linear part
+T L / (mu J) is lumped with the rig's compliance into C).  In normalised form
+
+    x = theta / (C T_s) = X(T*) = T* + kappa omega_m(T*),     kappa = k / (C T_s),
+
+increasing from 0 to infinity as T* goes from 0 to 4/3 (omega_m = 0 in stick, ~ (1/6) ln(1 /
+(4/3 - T*)) next to spinning).  ``Skeleton`` inverts it: T*(x) and its slope dT*/dx = 1 / (1 +
+kappa omega_m'(T*)), and omega_m(x), for any x >= 0 (odd in x), by cubic Hermite interpolation
+in x on nodes where T*, omega_m and omega_m' are exact (the piecewise-Chebyshev curves of
+``curves``, by stick radius: T*(b), omega(b) and their derivatives).  The nodes are fixed in b;
+only their abscissae x = T* + kappa omega move with kappa, so a new kappa costs one pass over
+~250 nodes.
+
+Accuracy: the interpolation error of a cubic Hermite interpolant on a step h is at most
+h^4 max|T*''''| / 384; the nodes (12 Chebyshev points per panel of the curves table, whose
+panels are geometric in b near spinning) keep it below 1e-10 in T* for 0 <= kappa <= 1e3
+(``tests/test_fit.py`` checks it against root finding on the curves themselves).  In stick
+(x <= 1) and next to the slip onset (1 - b < 1.7e-6, where kappa omega_m < 3e-18 kappa) T* = x
+exactly; beyond the last node (b = 1e-6, 4/3 - T* = 6e-19) T* = 4/3 to rounding.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from .. import asymptotics
+from ..criteria import GROSS_SLIP_TORQUE
+from ..curves import monotonic_curves
+
+__all__ = ["Skeleton", "skeleton_nodes"]
+
+_NODES_PER_PANEL = 12
+#: Extra nodes per unit width in b (the table's panels above b = 0.26 are up to 0.24 wide).
+_NODES_PER_UNIT_RADIUS = 600
+#: Nodes with 1 - b below this take omega and omega' from the small-slip expansion (S2) of ``asymptotics``
+#: (omega = (2/3) delta^3 + (pi/16) delta^4, within 1e-16 there), where the table's omega is rounding noise.
+_ONSET_NODES = 1e-3
+
+
+@functools.lru_cache(maxsize=1)
+def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(T*, omega_m, d omega_m / d T*) on the fixed nodes, T* increasing from 1 to 4/3 (exclusive)."""
+    curves = monotonic_curves()
+    torque, rotation = curves.by_radius["torque"], curves.by_radius["rigid_rotation"]
+    edges = torque.edges
+    def lobatto(n):  # Chebyshev-Lobatto points on [0, 1]
+        return 0.5 * (1.0 - np.cos(np.pi * np.arange(n) / (n - 1)))
+
+    radii = np.unique(np.concatenate([
+        lo + (hi - lo) * lobatto(_NODES_PER_PANEL + int(_NODES_PER_UNIT_RADIUS * (hi - lo)))
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True)]))
+    gap = np.asarray(curves.torque_gap(radii), dtype=float)  # 4/3 - T*, accurate next to spinning
+    t = GROSS_SLIP_TORQUE - gap
+    omega = np.asarray(rotation(radii), dtype=float)
+    gap_slope = np.asarray(curves.by_radius["torque_gap"].derivative(radii), dtype=float)  # = -dT*/db > 0
+    slope = np.asarray(rotation.derivative(radii), dtype=float) / -gap_slope
+    onset = 1.0 - radii < _ONSET_NODES  # the table's omega is rounding noise (~1e-15) there: (S2)
+    delta = 1.0 - radii[onset]
+    omega[onset] = asymptotics.onset_rotation(delta)
+    slope[onset] = (2.0 * delta**2 + 0.25 * np.pi * delta**3) / gap_slope[onset]
+    closest = 1.0 - radii < asymptotics.ONSET_SCALARS  # T* from (S1), as ``solve`` does
+    t[closest] = asymptotics.onset_torque(1.0 - radii[closest])
+    order = np.argsort(-radii)  # T* and omega increase as b decreases (T* may round to 4/3 near b = 1e-6)
+    t, omega, slope = t[order], omega[order], slope[order]
+    # the slip onset T* = 1 (b = 1): omega_m = omega_m' = 0 (omega_m ~ (2/3)(pi/2)^3 (T* - 1)^3)
+    return np.concatenate([[1.0], t]), np.concatenate([[0.0], omega]), np.concatenate([[0.0], slope])
+
+
+class Skeleton:
+    """T*(x), dT*/dx and omega_m(x) of the inverted skeleton x = T* + kappa omega_m(T*) (module docstring).
+
+    Parameters
+    ----------
+    kappa : float
+        k / (C T_s) >= 0: twist of the contact per unit omega over the rig's linear twist per unit T*.
+    """
+
+    def __init__(self, kappa: float):
+        if not kappa >= 0.0:
+            raise ValueError(f"kappa must be >= 0, got {kappa!r}")
+        self.kappa = float(kappa)
+        t, omega, slope = skeleton_nodes()
+        x = t + self.kappa * omega
+        keep = np.concatenate([[True], np.diff(np.maximum.accumulate(x)) > 0])  # strictly increasing abscissae
+        t, omega, slope, x = t[keep], omega[keep], slope[keep], x[keep]
+        denominator = 1.0 + self.kappa * slope
+        # a node at x = 0 (T* = 0, slope 1): the cubic on [0, 1] is T* = x exactly (stick)
+        self._x = np.concatenate([[0.0], x])
+        self._t = np.concatenate([[0.0], t])
+        self._omega = np.concatenate([[0.0], omega])
+        self._t_slope = np.concatenate([[1.0], 1.0 / denominator])
+        self._omega_slope = np.concatenate([[0.0], slope / denominator])
+
+    def __call__(self, x, rotation: bool = False):
+        """(T*, dT*/dx) at x, and omega_m with ``rotation``: T*, omega_m odd in x, the slope even.
+
+        Beyond the last node (4/3 - T* < 1e-18) T* = 4/3, its slope 0 and omega_m grows as x / kappa.
+        """
+        x = np.asarray(x, dtype=float)
+        a = np.abs(x)
+        nodes = self._x
+        last = nodes[-1]
+        inside = np.minimum(a, last)
+        j = np.minimum(np.searchsorted(nodes, inside, side="right") - 1, nodes.size - 2)
+        x0 = nodes[j]
+        h = nodes[j + 1] - x0
+        s = (inside - x0) / h
+        s2 = s * s
+        s3 = s2 * s
+        h01 = 3.0 * s2 - 2.0 * s3
+        h10 = (s3 - 2.0 * s2 + s) * h
+        h11 = (s3 - s2) * h
+        t0, t1, m0, m1 = self._t[j], self._t[j + 1], self._t_slope[j], self._t_slope[j + 1]
+        t = t0 + h01 * (t1 - t0) + h10 * m0 + h11 * m1
+        d01 = (6.0 * s - 6.0 * s2) / h
+        slope = d01 * (t1 - t0) + (3.0 * s2 - 4.0 * s + 1.0) * m0 + (3.0 * s2 - 2.0 * s) * m1
+        sign = np.sign(x)
+        if not rotation:
+            return sign * t, slope
+        w0, w1 = self._omega[j], self._omega[j + 1]
+        omega = w0 + h01 * (w1 - w0) + h10 * self._omega_slope[j] + h11 * self._omega_slope[j + 1]
+        beyond = a > last
+        if beyond.any():
+            extra = (a - last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
+            omega = np.where(beyond, omega + extra, omega)
+        return sign * t, slope, sign * omega

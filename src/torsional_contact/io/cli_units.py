@@ -1,0 +1,200 @@
+"""The command line in physical units: the specimen options, SI results, lab files and ``fit``.
+
+``solve`` and ``history`` take the specimen options ``--radius --normal-force --friction
+--shear-modulus`` (all four, or none) and optionally ``--gauge-length``; values are numbers in SI
+units or quantities ("5 mm", "1 kN", "80 GPa").  With them, torques (``--torque``,
+``--turning-points``, the ``torque`` column of a ``--signal`` file) are in N m and the result is
+in SI units (``specimen.physical_record``: the keys converted, a ``units`` object, the
+normalised result under ``normalized``); ``--stick-radius`` is then a length.  Without them
+nothing changes: every number is normalised.
+
+``history --signal FILE`` with the specimen options reads a lab CSV (``io.lab_files``:
+``time [s],torque [N m]``, time optional) and runs the same analysis as without them
+(``io.history_signal.analyse_file`` on the T* samples), then converts the result: every closed
+cycle gains its ``energy`` (J), ``dissipated_energy`` is in J.
+
+``fit --loop FILE --radius R --normal-force F`` reads ``torque [N m],twist [rad]`` and prints
+``fitting.fit_loop``'s result.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import tempfile
+
+import numpy as np
+
+__all__ = ["SPECIMEN_OPTIONS", "add_specimen_options", "add_fit_parser", "specimen_from", "number_or_quantity",
+           "plain_number", "solve_si", "history_si", "fit_command"]
+
+#: The specimen options that go together (dest, flag).
+SPECIMEN_OPTIONS = (("radius", "--radius"), ("normal_force", "--normal-force"), ("friction", "--friction"),
+                    ("shear_modulus", "--shear-modulus"))
+
+
+def number_or_quantity(text: str):
+    """argparse ``type``: a finite number (float) or a quantity with a unit (kept as text, read later)."""
+    try:
+        value = float(text)
+    except ValueError:
+        if any(c.isalpha() for c in text):  # a unit: read (and checked) with the specimen
+            return text.strip()
+        raise argparse.ArgumentTypeError(f"expected a number or a quantity such as '1.8 N m', got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    return value
+
+
+def plain_number(option: str, value):
+    """A normalised value: a float, or ValueError when it carries a unit (the specimen options are missing)."""
+    if isinstance(value, str):
+        raise ValueError(f"{option} {value!r} is not a plain number: values with units need the specimen options "
+                         "--radius, --normal-force, --friction and --shear-modulus")
+    return value
+
+
+def add_specimen_options(parser) -> None:
+    """--radius --normal-force --friction --shear-modulus [--gauge-length] (all four or none)."""
+    group = parser.add_argument_group("specimen (physical units: all four, or none for normalised units)")
+    group.add_argument("--radius", help="cylinder radius a, e.g. '5 mm' (a number: m)")
+    group.add_argument("--normal-force", help="normal force F, e.g. '1 kN' (a number: N)")
+    group.add_argument("--friction", help="Coulomb friction coefficient f, e.g. 0.6")
+    group.add_argument("--shear-modulus", help="shear modulus G of both cylinders, e.g. '80 GPa' (a number: Pa)")
+    group.add_argument("--gauge-length", help="distance L between the two cross-sections of the twist, e.g. "
+                       "'20 mm' (a number: m); adds 'twist' (rad)")
+
+
+def specimen_from(args):
+    """The ``Specimen`` of the options, None without any; ValueError for a partial set or a bad value."""
+    from ..specimen import Specimen
+
+    given = [(dest, flag) for dest, flag in SPECIMEN_OPTIONS if getattr(args, dest, None) is not None]
+    if not given:
+        if getattr(args, "gauge_length", None) is not None:
+            raise ValueError("--gauge-length needs the specimen options --radius, --normal-force, --friction and "
+                             "--shear-modulus")
+        return None
+    missing = [flag for dest, flag in SPECIMEN_OPTIONS if getattr(args, dest, None) is None]
+    if missing:
+        raise ValueError(f"{missing[0]} is missing: the specimen options --radius, --normal-force, --friction and "
+                         "--shear-modulus go together")
+    values = {dest: getattr(args, dest) for dest, _ in SPECIMEN_OPTIONS}
+    try:
+        return Specimen(**values, gauge_length=args.gauge_length)
+    except ValueError as exc:  # name the option, not the keyword
+        text = str(exc)
+        for dest, flag in (*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length")):
+            if text.startswith(dest + " "):
+                text = flag + text[len(dest):]
+        raise ValueError(text) from None
+
+
+def solve_si(args, specimen) -> dict:
+    """``solve`` with the specimen options: the state in SI units (``--radii`` in m)."""
+    if args.stick_radius is not None:
+        state = specimen.solve(stick_radius=args.stick_radius, method=args.method, n_terms=args.n_terms)
+    else:
+        state = specimen.solve(torque=_torque_text("--torque", args.torque), method=args.method, n_terms=args.n_terms)
+    record = state.normalized.as_dict()
+    if args.radii is not None:
+        radii = np.array([_length("--radii", r) for r in args.radii]) / specimen.radius
+        if np.any(radii < 0) or np.any(radii > 1):
+            raise ValueError(f"--radii must lie in [0, {specimen.radius:g}] m (0 to the radius)")
+        record["radii"] = radii.tolist()
+        for name in ("traction", "slip"):
+            record[name] = [float(v) if math.isfinite(v) else None for v in getattr(state.normalized, name)(radii)]
+    from ..specimen import physical_record
+
+    return physical_record(record, specimen)
+
+
+def _torque_text(option: str, value):
+    from .. import units
+
+    return units.si_value(option, value, "torque")
+
+
+def _length(option: str, value) -> float:
+    from .. import units
+
+    return units.si_value(option, value, "length")
+
+
+def history_si(args, specimen, analyse_file):
+    """``history`` with the specimen options: turning points in N m, or a lab CSV for ``--signal``."""
+    from ..specimen import physical_record
+
+    if args.signal is None:
+        if args.radii is not None:
+            raise ValueError("--radii is not available with the specimen options for history (use solve)")
+        torques = [_torque_text(f"--turning-points[{i}]", v) for i, v in enumerate(args.turning_points)]
+        return [physical_record(state.normalized.as_dict(), specimen) for state in
+                specimen.history(torques, method=args.method, n_terms=args.n_terms)]
+    if args.output is not None:
+        raise ValueError("--output is not available with the specimen options (its table is normalised); "
+                         "leave out the specimen options for it")
+    from .lab_files import read_lab_columns
+
+    label = f"--signal {args.signal}"
+    columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label)
+    torque_star = columns["torque"] / specimen.torque_scale
+    limit = 4.0 / 3.0 * (1 + 4 * np.finfo(float).eps)
+    bad = np.abs(torque_star) > limit
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError(f"{label}: sample {i} (data row {i + 1}): torque {columns['torque'][i]:.6g} N m exceeds the "
+                         f"gross-slip torque 2 f F a / 3 = {specimen.gross_slip_torque:.6g} N m: the cylinders spin, "
+                         "there is no static solution")
+    handle, tmp = tempfile.mkstemp(suffix=".npy")
+    os.close(handle)
+    try:
+        np.save(tmp, np.clip(torque_star, -4.0 / 3.0, 4.0 / 3.0))
+        result = analyse_file(tmp, method=args.method, n_terms=args.n_terms, output=None,
+                              progress=not args.no_progress, full=args.json)
+    finally:
+        os.remove(tmp)
+    record = physical_record(result, specimen)
+    record["columns"] = {"torque": columns["units"]["torque"], **({"time": columns["units"]["time"]}
+                                                                  if "time" in columns["units"] else {})}
+    if "time" in columns:
+        record["duration"] = float(columns["time"][-1] - columns["time"][0])
+        record["units"]["duration"] = "s"
+    return record
+
+
+def add_fit_parser(sub, parser_class) -> None:
+    """The ``fit`` subcommand: f, G and the compliance from a measured loop."""
+    p = sub.add_parser("fit", help="friction coefficient and shear modulus from a measured torque-twist loop")
+    p.add_argument("--loop", required=True, help="CSV with a header 'torque [N m],twist [rad]' (units as written), "
+                   "samples in time order from the virgin state")
+    p.add_argument("--radius", required=True, help="cylinder radius a, e.g. '5 mm' (a number: m)")
+    p.add_argument("--normal-force", required=True, help="normal force F, e.g. '1 kN' (a number: N)")
+    p.add_argument("--torque-noise", help="standard deviation of the torque noise, e.g. '0.01 N m' (default: "
+                   "estimated)")
+    p.add_argument("--twist-noise", help="standard deviation of the twist noise, e.g. '1e-5 rad' (default: estimated)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=fit_command)
+
+
+def fit_command(args) -> dict:
+    from ..fitting import MIN_SAMPLES, fit_loop
+    from .lab_files import read_lab_columns
+
+    if (args.torque_noise is None) != (args.twist_noise is None):
+        raise ValueError("give both --torque-noise and --twist-noise, or neither (then both are estimated)")
+    columns = read_lab_columns(args.loop, ["torque", "twist"], ["time"], label=f"--loop {args.loop}",
+                               min_rows=MIN_SAMPLES)
+    names = {"radius": "--radius", "normal_force": "--normal-force", "torque_noise": "--torque-noise",
+             "twist_noise": "--twist-noise"}
+    try:
+        result = fit_loop(columns["torque"], columns["twist"], radius=args.radius, normal_force=args.normal_force,
+                          torque_noise=args.torque_noise, twist_noise=args.twist_noise)
+    except ValueError as exc:
+        text = str(exc)
+        for key, flag in names.items():
+            if text.startswith(key + " "):
+                text = flag + text[len(key):]
+        raise ValueError(text) from None
+    return result.as_dict()

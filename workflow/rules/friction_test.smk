@@ -1,0 +1,113 @@
+# The laboratory front door: the loop fit's coverage study (friction_test in the configuration).
+
+FRICTION_TEST = config["friction_test"]
+
+
+rule friction_test_coverage:
+    input:
+        script="workflow/scripts/friction_test_coverage.py",
+        lib=lib("workflow/scripts/friction_test_coverage.py"),
+    output:
+        json=f"{OUT}/data/friction_test_coverage.json",
+        tex=f"{OUT}/tables/friction_test_coverage.tex",
+        macros=f"{OUT}/macros/friction_test.tex",
+    params:
+        specimen=json.dumps(FRICTION_TEST["specimen"]),
+        scenarios=json.dumps(FRICTION_TEST["scenarios"]),
+        draws=FRICTION_TEST["draws"],
+        cycles=FRICTION_TEST["cycles"],
+        samples=FRICTION_TEST["samples_per_cycle"],
+        seed=FRICTION_TEST["seed"],
+    log:
+        logfile("friction_test_coverage"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --specimen '{params.specimen}' --scenarios '{params.scenarios}'"
+        " --draws {params.draws} --cycles {params.cycles} --samples-per-cycle {params.samples}"
+        " --seed {params.seed} --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
+# Figures for experimenters (notebooks/friction_test.py, paper/sections/friction_test.tex): the lab
+# specimen and record are committed in notebooks/data/ (made by workflow/scripts/make_lab_loop.py).
+LAB_LOOP = "notebooks/data/lab_loop.csv"
+LAB_TRUTH = "notebooks/data/lab_loop.json"
+
+
+rule fig_lab_loops:
+    input:
+        script="workflow/scripts/fig_lab_loops.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_loops.py"),
+        specimen=LAB_TRUTH,
+    output:
+        **fig("lab_loops", "lab_loops"),
+    params:
+        amplitudes=FRICTION_TEST["figure_amplitudes"],
+    log:
+        logfile("fig_lab_loops"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --specimen {input.specimen} --amplitudes {params.amplitudes}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule fig_lab_regime_map:
+    input:
+        script="workflow/scripts/fig_lab_regime_map.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_regime_map.py"),
+        specimen=LAB_TRUTH,
+    output:
+        **fig("lab_regime_map", "lab_regime_map"),
+    params:
+        max_force=FRICTION_TEST["map_max_force"],
+    log:
+        logfile("fig_lab_regime_map"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --specimen {input.specimen} --max-force {params.max_force}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule fig_lab_fit:
+    input:
+        script="workflow/scripts/fig_lab_fit.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_lab_fit.py"),
+        loop=LAB_LOOP,
+        truth=LAB_TRUTH,
+    output:
+        **fig("lab_fit", "lab_fit"),
+    log:
+        logfile("fig_lab_fit"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --loop {input.loop} --truth {input.truth}"
+        " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+
+
+rule lab_fit_macros:
+    input:
+        script="workflow/scripts/lab_fit_macros.py",
+        lib=lib("workflow/scripts/lab_fit_macros.py"),
+        loop=LAB_LOOP,
+        truth=LAB_TRUTH,
+    output:
+        json=f"{OUT}/data/lab_fit.json",
+        macros=f"{OUT}/macros/lab_fit.tex",
+    log:
+        logfile("lab_fit_macros"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --loop {input.loop} --truth {input.truth} --json {output.json}"
+        " --macros {output.macros} > {log} 2>&1"

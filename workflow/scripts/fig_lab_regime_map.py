@@ -1,0 +1,58 @@
+"""Slip regime map of a specimen in physical units: stick, partial slip and gross slip against the
+normal force and the amplitude of a torque cycling between -T_a and T_a, with the energy
+dissipated per cycle in the partial-slip band.
+
+Units: normal force N, torque N m, energy J.  Slip starts at T_a = f F a / 2 (T* = 1), the
+cylinders spin at T_a = 2 f F a / 3 (T* = 4/3); between them a cycle dissipates
+W(2 T*_a) (f F)^2 / (pi^2 mu a) (``histories``, rule 5).  The specimen (a, f, G) is the lab
+record's (notebooks/data/lab_loop.json).
+"""
+
+import json
+
+import numpy as np
+
+from torsional_contact import Specimen
+from torsional_contact.curves import monotonic_curves
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+
+
+def main():
+    p = figure_parser(__doc__)
+    p.add_argument("--specimen", required=True, help="JSON with radius, normal_force, friction, shear_modulus")
+    p.add_argument("--max-force", type=float, required=True, help="largest normal force (N)")
+    a = p.parse_args()
+    data = json.loads(open(a.specimen, encoding="utf-8").read())
+    radius, friction, modulus = data["radius"], data["friction"], data["shear_modulus"]
+    force = np.linspace(0.0, a.max_force, 301)[1:]
+    onset = 0.5 * friction * force * radius
+    spin = 2.0 / 3.0 * friction * force * radius
+    use_style(a.style)
+    fig, ax = plt.subplots(figsize=(4.6, 3.4))
+    top = 1.15 * spin[-1]
+    ax.fill_between(force, 0, onset, color="#d9ecd9", label="stick (shakedown)")
+    ax.fill_between(force, onset, spin, color="#fde9c8", label="partial slip")
+    ax.fill_between(force, spin, top, color="#f6d0d0", label="gross slip (spinning)")
+    # energy per cycle in the partial-slip band: W(2 T*_a) (f F)^2 / (pi^2 mu a)
+    grid_force, ratio = np.meshgrid(force, np.linspace(1.0005, 4.0 / 3.0 - 1e-6, 200))
+    work = 4.0 * monotonic_curves().work(ratio) * (friction * grid_force) ** 2 / (np.pi**2 * modulus * radius)
+    levels = 10.0 ** np.arange(-7, -1)
+    lines = ax.contour(grid_force, ratio * 0.5 * friction * grid_force * radius, work, levels=levels,
+                       colors="0.25", linewidths=0.6)
+    ax.clabel(lines, fmt=lambda v: f"$10^{{{round(np.log10(v))}}}$ J", fontsize=6)
+    example = Specimen(radius=radius, normal_force=data["normal_force"], friction=friction, shear_modulus=modulus)
+    ax.plot([data["normal_force"]], [1.8], "k*", label=f"1.8 N m at {data['normal_force']:g} N: "
+            f"{example.energy_per_cycle(1.8) * 1e6:.3g} $\\mu$J/cycle")
+    ax.set_xlim(0, a.max_force)
+    ax.set_ylim(0, top)
+    ax.set_xlabel(r"normal force $F$ [N]")
+    ax.set_ylabel(r"torque amplitude $T_a$ [N m]")
+    ax.set_title(f"a = {radius * 1e3:g} mm, f = {friction:g}, G = {modulus / 1e9:g} GPa; contours: energy per cycle",
+                 fontsize=7)
+    ax.legend(fontsize=6, loc="upper left")
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()
