@@ -43,16 +43,18 @@ def _progress(enabled: bool):
         bar.close()
 
 
-def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress: bool = True, full: bool = True):
+def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress: bool = True, full: bool = True,
+                 column=None, parents: bool = False):
     """Read ``path``, apply the memory rules, count closed loops; the JSON-ready result.
 
     With ``full`` the object has ``samples``, ``turning_points``, ``states`` (one per
     turning point), ``cycles`` (closed loops and half loops grouped by range and mean,
     ``histories.signal``), ``closed_loops``, ``half_loops`` and ``dissipated_energy``
     (total); otherwise only the scalar summary.  ``output``:
-    also write the per-sample CSV table.
+    also write the per-sample CSV table (``io.output``: never over the input; ``parents``:
+    create its missing directories).  ``column``: of a CSV with several columns (``read_signal``).
     """
-    values = read_signal(path, label=f"--signal {path}")
+    values = read_signal(path, label=f"--signal {path}", column=column)
     enabled = progress and values.size >= PROGRESS_SAMPLES
     with _progress(enabled) as handle:
         advance, bar = handle if enabled else (handle, None)
@@ -66,7 +68,8 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress:
             advance("per-sample table")
             omega, energy = result.sample_values()
             write_sample_table(output, _HEADER, [range_of(values.size), values, omega, energy], integer_columns=(0,),
-                               progress=lambda rows: advance("writing " + output, rows))
+                               progress=lambda rows: advance("writing " + output, rows), label="--output",
+                               inputs=(("--signal", path),), parents=parents)
     summary = {
         "samples": result.samples,
         "turning_points": int(result.index.size),
