@@ -483,6 +483,7 @@ def test_input_errors_name_the_option_and_the_path(tmp_path):
         (["history", "--signal", str(tmp_path / "absent.csv")], ["--signal", "absent.csv", "No such file"]),
         (["history", "--signal", str(tmp_path)], ["--signal", str(tmp_path), "Is a directory"]),
         (["history", "--signal", str(tmp_path / "absent.npy")], ["--signal", "absent.npy", "No such file"]),
+        (["history", "--signal", "a\0b.csv"], ["--signal", "NUL character"]),
     ]:
         status, out, err = run_in_process(argv)
         check_streams(status, out, err)
@@ -528,3 +529,12 @@ def test_full_file_system_is_one_line_and_keeps_the_old_table(tmp_path):
     out = run.stdout.splitlines()
     assert out[0] == "status=2" and out[1:] == [".", "..", "out.csv", "old"], run.stdout
     assert run.stderr.splitlines() == [f"{PREFIX}--output area/out.csv: No space left on device"]
+
+
+def test_ci_runs_the_longer_profile():
+    """.ci/run selects the "ci" profile, so that CI tries more examples than the fast tier."""
+    from pathlib import Path
+
+    ci = (Path(__file__).resolve().parents[1] / ".ci" / "run").read_text()
+    assert "export TORSIONAL_HYPOTHESIS_PROFILE=ci" in ci
+    assert PROFILES["ci"] >= 10 * PROFILES["fast"]

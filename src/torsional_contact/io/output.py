@@ -4,7 +4,9 @@ What happens at the path depends on what is there (symbolic links followed):
 
 * a regular file, or a new name in an existing directory: replaced atomically, a temporary
   file beside it written, flushed, fsync'ed and renamed over it (the old file's permission
-  bits and, where allowed, owner kept); readers see the old or the new content, never half;
+  bits and, where allowed, owner kept); readers see the old or the new content, never half
+  (a file with several hard links is replaced under this name; its other names keep the old
+  content);
 * a symbolic link: written THROUGH to its final target, atomically beside the target; a
   dangling link creates its target when the target's directory exists;
 * a FIFO, a character or block device: opened and written in place, never replaced;

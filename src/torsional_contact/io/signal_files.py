@@ -165,6 +165,9 @@ def read_signal(path, label: str | None = None, column=None) -> np.ndarray:
     """
     path = os.fspath(path)
     label = label or path
+    if "\0" in path:  # open() would say only "embedded null byte"
+        shown = label.replace("\0", "\\0")
+        raise ValueError(f"{shown}: cannot read (the path contains a NUL character)")
     if path.endswith(".npy"):
         return _read_npy(label, path, column)
     return _read_text(label, path, column)
