@@ -490,6 +490,21 @@ def test_input_errors_name_the_option_and_the_path(tmp_path):
         assert status == 2 and all(n in err for n in names), err
 
 
+@pytest.mark.parametrize("output, reason", [
+    ("/proc/out.csv", "cannot create a file in /proc" if IS_ROOT else "directory /proc is not writable"),
+    ("", "is empty: name a file"),
+    (".", "names a directory, not a file"),
+])
+def test_outputs_from_the_trial_are_one_line(tmp_path, output, reason):
+    """The outputs that gave 21-29-line tracebacks: one line naming --output, nothing written, nothing printed."""
+    path = signal_file(tmp_path)
+    before = snapshot(tmp_path)
+    status, out, err = run_in_process(["history", "--signal", path, "--output", output, "--json"])
+    check_streams(status, out, err, must_name="--output")
+    assert status == 2 and reason in err and snapshot(tmp_path) == before
+    assert not os.path.exists("/proc/out.csv")
+
+
 def test_unreadable_input_names_the_option(tmp_path):
     path = signal_file(tmp_path)
     os.chmod(path, 0)
