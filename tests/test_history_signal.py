@@ -355,8 +355,8 @@ def test_read_signal_text_and_npy(tmp_path):
         ("0.1\nnan\n", "line 2: nan is not finite"),
         ("0.1\n\n-inf\n", "line 3: -inf is not finite"),
         ("0.1\n1.5\n", r"line 2: 1.5 lies outside \[-4/3, 4/3\]"),
-        ("torque\n0.1\n", "line 1: 'torque' is not a number"),
-        ("0.1,0.2\n", "line 1"),
+        ("0.1\ntorque\n", "line 2: 'torque' is not a number"),  # a name on the first line only is a header
+        ("0.1,0.2\n", "2 columns"),
         ("", "no samples"),
         ("\n# only a comment\n", "no samples"),
     ],

@@ -4,8 +4,9 @@ The public surface: ``solve`` returns a ``Solution`` with the stick radius b/a, 
 T* = 2T/(f F a), the rigid rotation omega (f p0 / mu), the regime and the fields;
 ``histories`` applies the memory rules to a torque history; ``Specimen`` speaks physical
 units (pint at the boundary) and ``fit_loop`` turns a measured torque-twist loop into a
-friction coefficient and a shear modulus.  Conventions and units are in
-the README ("Conventions and public interface").
+friction coefficient and a shear modulus.  Conventions, units, the Python API and the
+command line are in docs/conventions.md; the warning categories (``TorsionalContactWarning``
+and its subclasses, exported here) in ``diagnostics``.
 
 Submodules are imported lazily, on first use of a name, so that ``import torsional_contact``
 is cheap and a workflow script depends only on the modules it really uses.
@@ -34,10 +35,13 @@ _EXPORTS = {
     "fit_loop": "fitting",
     "SLIP_ONSET_TORQUE": "criteria",
     "GROSS_SLIP_TORQUE": "criteria",
+    # every warning category of ``diagnostics`` (the README tells users to filter them by name)
+    "TorsionalContactWarning": "diagnostics",
     "AccuracyWarning": "diagnostics",
     "IllConditioningWarning": "diagnostics",
     "ResolutionWarning": "diagnostics",
     "TruncationWarning": "diagnostics",
+    "UnphysicalResultWarning": "diagnostics",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

@@ -2,6 +2,10 @@
 
 import sys
 
-from .io.cli import main
+try:
+    from .io.cli import main
+except KeyboardInterrupt:  # Ctrl-C while the modules load: one line, as during a run
+    sys.stderr.write("torsional_contact: interrupted\n")
+    sys.exit(130)
 
 sys.exit(main())

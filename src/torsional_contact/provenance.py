@@ -1,13 +1,18 @@
-"""Writing results: atomic files (temporary name, then rename) with provenance metadata."""
+"""Writing results: data files with provenance metadata and LaTeX macros, through the one writer.
+
+Every write goes through ``torsional_contact.io.output`` (regular files replaced atomically,
+symbolic links written through, FIFOs and devices written in place, directories and inputs
+refused; see its docstring).
+"""
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import platform
-import tempfile
 from importlib import metadata as _metadata
+
+from .io import output as _output
 
 __all__ = ["provenance", "atomic_path", "write_text", "write_json", "latex_macros", "write_macros", "latex_escape"]
 
@@ -36,36 +41,28 @@ def provenance(**fields) -> dict:
     }
 
 
-@contextlib.contextmanager
-def atomic_path(path, suffix=""):
-    """Yield a temporary path beside ``path``; rename it onto ``path`` only on success."""
-    path = os.fspath(path)
-    directory = os.path.dirname(os.path.abspath(path))
-    os.makedirs(directory, exist_ok=True)
-    handle, tmp = tempfile.mkstemp(dir=directory, prefix=".tmp-", suffix=suffix or os.path.splitext(path)[1])
-    os.close(handle)
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(tmp, 0o666 & ~umask)  # mkstemp's 0600 would make results unreadable to others
-    try:
-        yield tmp
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+def atomic_path(path, suffix="", *, label="path", inputs=(), parents=False):
+    """Yield a temporary path; its content lands at ``path`` only on success (``io.output.atomic_path``).
+
+    A regular file is replaced atomically, a symbolic link written through, a FIFO or device
+    written in place; a directory, a missing parent directory (unless ``parents``) or one of
+    ``inputs`` is refused with ``io.output.OutputError`` naming ``label`` and ``path``.
+    """
+    return _output.atomic_path(path, suffix, label=label, inputs=inputs, parents=parents)
 
 
-def write_text(path, text: str) -> None:
-    """Write ``text`` to ``path`` atomically."""
-    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8") as handle:
+def write_text(path, text: str, *, label="path", inputs=(), parents=False) -> None:
+    """Write ``text`` (UTF-8) to ``path`` through the one writer (``io.output.open_output``)."""
+    with _output.open_output(path, "w", label=label, inputs=inputs, parents=parents) as handle:
         handle.write(text)
 
 
-def write_json(path, payload, **metadata_fields) -> None:
-    """Write ``payload`` (a dict) with a ``metadata`` entry of provenance, atomically."""
+def write_json(path, payload, *, label="path", inputs=(), parents=False, **metadata_fields) -> None:
+    """Write ``payload`` (a dict) with a ``metadata`` entry of provenance, through the one writer."""
     record = dict(payload)
     record["metadata"] = provenance(**metadata_fields)
-    write_text(path, json.dumps(record, indent=1, allow_nan=False) + "\n")
+    write_text(path, json.dumps(record, indent=1, allow_nan=False) + "\n", label=label, inputs=inputs,
+               parents=parents)
 
 
 _LATEX_SPECIALS = {"\\": r"\textbackslash{}", "_": r"\_", "%": r"\%", "&": r"\&", "#": r"\#", "$": r"\$",
@@ -91,6 +88,6 @@ def latex_macros(values: dict, source: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write_macros(path, values: dict, source: str) -> None:
-    """Write ``latex_macros(values, source)`` to ``path`` atomically."""
-    write_text(path, latex_macros(values, source))
+def write_macros(path, values: dict, source: str, *, label="path", parents=False) -> None:
+    """Write ``latex_macros(values, source)`` to ``path`` through the one writer."""
+    write_text(path, latex_macros(values, source), label=label, parents=parents)

@@ -58,6 +58,11 @@ SI_UNITS = {
     "energy": "J",
     "range": "N m",
     "mean": "N m",
+    "range_bin": "N m",
+    "mean_bin": "N m",
+    "bin_width": "N m",
+    "gate": "N m",
+    "loop_energy": "J",
     "radii": "m",
     "traction": "Pa",
     "slip": "m",
@@ -363,10 +368,11 @@ def physical_record(record: dict, specimen: Specimen) -> dict:
 
 
 def _factor(key: str, specimen: Specimen) -> float:
-    return {"torque": specimen.torque_scale, "turning_points": specimen.torque_scale, "range": specimen.torque_scale,
-            "mean": specimen.torque_scale, "stick_radius": specimen.radius, "slip_fronts": specimen.radius,
-            "radii": specimen.radius, "rigid_rotation": specimen.rotation_scale,
-            "dissipated_energy": specimen.energy_scale, "energy": specimen.energy_scale,
+    torque, energy = specimen.torque_scale, specimen.energy_scale
+    return {"torque": torque, "turning_points": torque, "range": torque, "mean": torque, "range_bin": torque,
+            "mean_bin": torque, "bin_width": torque, "gate": torque, "loop_energy": energy,
+            "stick_radius": specimen.radius, "slip_fronts": specimen.radius, "radii": specimen.radius,
+            "rigid_rotation": specimen.rotation_scale, "dissipated_energy": energy, "energy": energy,
             "traction": specimen.stress_scale, "residual_traction": specimen.stress_scale,
             "slip": specimen.displacement_scale}[key]
 

@@ -58,16 +58,37 @@ def _real_array(name: str, value, valid: str) -> np.ndarray:
     return array.astype(float)
 
 
-def coordinates(r, z=None):
-    """Validate field coordinates: 0 <= r <= 1, z >= 0, all finite real numbers; returns float arrays."""
-    r = _real_array("r", r, "in [0, 1]")
-    if not np.all(np.isfinite(r)) or np.any(r < 0) or np.any(r > 1):
-        raise ValueError("r must be finite and lie in [0, 1] (units of the cylinder radius a)")
+def _first(array: np.ndarray, bad: np.ndarray) -> str:
+    """The first offending value of ``array`` (where ``bad``), for a message."""
+    flat = np.flatnonzero(bad)
+    value = float(array.ravel()[flat[0]])
+    if array.size == 1:
+        return f"{value!r}"
+    index = flat[0] if array.ndim == 1 else tuple(int(k) for k in np.unravel_index(flat[0], array.shape))
+    where = f"element {index}"
+    return f"{value!r} ({where})"
+
+
+def coordinates(r, z=None, *, names=("r", "z")):
+    """Validate field coordinates: 0 <= r <= 1, z >= 0, all finite real numbers, r and z of broadcastable
+    shapes; returns float arrays.  ``names``: how the messages call r and z (e.g. "--radii")."""
+    r_name, z_name = names if len(names) == 2 else (names[0], "z")
+    r = _real_array(r_name, r, "in [0, 1]")
+    bad = ~(np.isfinite(r) & (r >= 0) & (r <= 1))
+    if bad.any():
+        raise ValueError(f"{r_name} must be finite and lie in [0, 1] (units of the cylinder radius a), "
+                         f"got {_first(r, bad)}")
     if z is None:
         return r
-    z = _real_array("z", z, ">= 0")
-    if not np.all(np.isfinite(z)) or np.any(z < 0):
-        raise ValueError("z must be finite and >= 0 (the upper cylinder; units of a)")
+    z = _real_array(z_name, z, ">= 0")
+    bad = ~(np.isfinite(z) & (z >= 0))
+    if bad.any():
+        raise ValueError(f"{z_name} must be finite and >= 0 (the upper cylinder; units of a), got {_first(z, bad)}")
+    try:
+        np.broadcast_shapes(r.shape, z.shape)
+    except ValueError:
+        raise ValueError(f"{r_name} and {z_name} must have shapes that broadcast together (numpy rules), got "
+                         f"{r_name} of shape {r.shape} and {z_name} of shape {z.shape}") from None
     return r, z
 
 

@@ -71,6 +71,7 @@ def report_targets(wildcards):
 rule report:
     input:
         script="workflow/scripts/build_report.py",
+        lib=lib("workflow/scripts/build_report.py"),
         captions=sorted(str(p) for p in Path("workflow/report").glob("*.rst")),
         targets=report_targets,
     output:

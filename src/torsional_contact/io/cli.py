@@ -2,6 +2,13 @@
 
 Bad input exits with status 2 and one line on standard error; nothing is printed
 on standard output.  Accuracy warnings are printed as one line each on stderr.
+Errors of the operating system (a file that cannot be read or written, a full disk, a
+read-only file system, standard output on /dev/full) exit with status 2 and one line naming
+the option and the path; an interrupt (Ctrl-C) exits with 130 and one line; standard output
+closed early (``| head -c1``) ends the command quietly with status 141 (128 + SIGPIPE, what
+the shell reports for a command that SIGPIPE killed).  Files named on the command line are
+written by ``io.output`` (regular files atomically, symbolic links through, FIFOs and devices
+in place; never over an input).
 
 Numbers: every subcommand's parser (``_Parser``) takes negative numbers in any form,
 -1, -.5, -1e-1, -1E+3 (argparse alone reads "-1e-1" as an option), and the number
@@ -13,8 +20,10 @@ from __future__ import annotations
 
 import argparse
 import decimal
+import errno
 import json
 import math
+import os
 import re
 import sys
 import warnings
@@ -50,6 +59,10 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, no usage dump
         raise UsageError(message)
 
+    def _print_message(self, message, file=None):  # --help, --version: argparse would hide a failed write
+        if message:
+            (file or sys.stderr).write(message)
+
 
 def real_argument(text: str) -> float:
     """argparse ``type`` for a finite real number in decimal or exponent form ("-1e-1", "1.23")."""
@@ -77,6 +90,13 @@ def _finite_record(record):
     return record
 
 
+def _radii(values):
+    """``--radii`` checked (in [0, 1]) before any solve: the message names the option and the value."""
+    from .. import validation
+
+    return None if values is None else validation.coordinates(np.asarray(values, dtype=float), names=("--radii",))
+
+
 def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
     """Add the interface profiles ``fields`` of ``state`` at ``radii`` (JSON: non-finite -> null)."""
     if radii is not None:
@@ -93,6 +113,7 @@ def _cmd_solve(args) -> dict:
         return cli_units.solve_si(args, specimen)
     args.torque = cli_units.plain_number("--torque", args.torque)
     args.stick_radius = cli_units.plain_number("--stick-radius", args.stick_radius)
+    _radii(args.radii)
     solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms)
     return _profiles(solution.as_dict(), solution, args.radii)
 
@@ -105,22 +126,33 @@ def _cmd_history(args):
 
     specimen = cli_units.specimen_from(args)
     if specimen is not None:
-        return cli_units.history_si(args, specimen, analyse_file)
+        return cli_units.history_si(args, specimen)
     if args.signal is None:
         args.turning_points = [cli_units.plain_number("--turning-points", v) for v in args.turning_points]
         for option, value in (("--output", args.output), ("--states", args.states), ("--gate", args.gate),
-                              ("--bin-width", args.bin_width)):
+                              ("--bin-width", args.bin_width), ("--column", args.column)):
             if value is not None:
                 raise UsageError(f"{option} needs --signal (it applies to a sampled signal)")
         torques = validation.torque_sequence("--turning-points", args.turning_points)
+        _radii(args.radii)
         states = history(torques, method=args.method, n_terms=args.n_terms)
         fields = ("traction", "slip", "residual_traction")
         return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
+    from .output import resolve_output
+
+    if args.parents and args.output is None and args.states is None:
+        raise UsageError("--parents needs --output or --states (it creates their missing directories)")
+    tables = [(option, path) for option, path in (("--output", args.output), ("--states", args.states))
+              if path is not None]
+    if len(tables) == 2 and os.path.abspath(args.output) == os.path.abspath(args.states):
+        raise UsageError(f"--states and --output name the same file ({args.output}): give two paths")
+    for option, path in tables:  # refuse a bad table path before the analysis, not after it
+        resolve_output(path, label=option, inputs=(("--signal", args.signal),), parents=args.parents)
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
-                        progress=not args.no_progress, full=args.json)
+                        progress=not args.no_progress, full=args.json, column=args.column, parents=args.parents)
 
 
 #: Largest --digits of ``reference`` (working precision digits + 20; every digit printed is kept).
@@ -207,10 +239,17 @@ def _cmd_errata(args) -> list:
     return errata_table()
 
 
+#: The epilog of the subcommands that print solutions: what null means in their JSON.
+NULL_EPILOG = ("JSON has no infinity: a number that is not finite prints as null. rigid_rotation is null at "
+               "spinning (|T*| = 4/3, stick radius 0), where the Python API gives inf (the rotation is unbounded).")
+
+
 def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
-    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
-    p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
+    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: fast, the most accurate)")
+    p.add_argument("--n-terms", type=int, default=None,
+                   help=f"published and complete weak forms: number of eigenfunctions (default {DEFAULT_N_TERMS}); "
+                   "not used by the default method (fast: the interface values need no truncation)")
     p.add_argument("--radii", type=real_argument, nargs="+", help="also report traction and slip at these r/a")
 
 
@@ -219,7 +258,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    p = sub.add_parser("solve", help="solve for a stick radius or a torque")
+    p = sub.add_parser("solve", help="solve for a stick radius or a torque", epilog=NULL_EPILOG)
     group = p.add_mutually_exclusive_group(required=True)
     group.add_argument("--stick-radius", type=cli_units.number_or_quantity,
                        help="b/a in [0, 1]; with the specimen options a length, e.g. '2 mm'")
@@ -229,21 +268,28 @@ def build_parser() -> argparse.ArgumentParser:
     cli_units.add_specimen_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_cmd_solve)
-    p = sub.add_parser("history", help="interface states along a torque history (memory rules)")
+    p = sub.add_parser("history", help="interface states along a torque history (memory rules)", epilog=NULL_EPILOG)
     source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--turning-points", type=cli_units.number_or_quantity, nargs="+",
                         help="T* after each step, in [-4/3, 4/3] (with the specimen options: torques, N m)")
-    source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line, or a .npy array")
+    source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line (# comments, a header line "
+                        "of names and blank lines allowed) or a column of a CSV (--column), or a .npy array; with "
+                        "the specimen options a CSV whose header carries units, e.g. 'time [s],torque [N m]'")
+    p.add_argument("--column", help="with --signal: the column of T* in a CSV of several, a number from 1 or a name "
+                   "of its header line")
     p.add_argument("--output", help="with --signal: table of the twist and dissipated energy at every sample "
-                   "(.npz or .npy: binary, for long signals; any other name: CSV)")
+                   "(.npz or .npy: binary, for long signals; any other name: CSV; a file, symbolic link, FIFO, "
+                   "device or /dev/stdout; never the input)")
     p.add_argument("--states", help="with --signal: table of the states at every turning point (.npz, .npy or CSV; "
                    "the JSON lists them only for signals of at most 1000 turning points)")
+    p.add_argument("--parents", action="store_true", help="create the missing directories of --output and --states")
     p.add_argument("--gate", type=real_argument, default=None,
                    help="with --signal: drop reversals smaller than this torque range before the memory rules "
-                   "(hysteresis filter; changes the history: see docs/conventions.md; default 0, none)")
+                   "(hysteresis filter; changes the history: see docs/conventions.md; default 0, none; "
+                   "with the specimen options in N m)")
     p.add_argument("--bin-width", type=real_argument, default=None,
                    help="with --signal: width in T* of the range and mean bins of the rainflow matrix in the JSON "
-                   "(default: exact grouping up to 1000 turning points, else 0.05)")
+                   "(default: exact grouping up to 1000 turning points, else 0.05; with the specimen options in N m)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
     cli_units.add_specimen_options(p)
@@ -268,22 +314,35 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _one_line(text: str) -> str:
+    """``text`` on one line (a path or a message may hold line breaks)."""
+    return " ".join(str(text).splitlines()) or "(no message)"
+
+
 def _format_warning(message, category, filename, lineno, line=None):
-    return f"warning ({category.__name__}): {message}\n"
+    return f"warning ({category.__name__}): {_one_line(message)}\n"
 
 
-def main(argv=None) -> int:
-    parser = build_parser()
-    saved_format = warnings.formatwarning
-    warnings.formatwarning = _format_warning  # one line per accuracy warning
-    try:
-        args = parser.parse_args(argv)
-        result = args.handler(args)
-    except (UsageError, ValueError) as exc:
-        print(f"{PROG}: error: {exc}", file=sys.stderr)
-        return 2
-    finally:
-        warnings.formatwarning = saved_format
+def _error(message: str, status: int = 2) -> int:
+    print(f"{PROG}: error: {_one_line(message)}", file=sys.stderr)
+    return status
+
+
+def _quiet_standard_output() -> None:
+    """After standard output failed: point it at /dev/null, so that Python's flush at exit reports nothing.
+
+    Only for the process's own standard output (not one a caller substituted, e.g. pytest's capture).
+    """
+    if sys.stdout is sys.__stdout__ and sys.stdout is not None:
+        try:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            os.close(devnull)
+        except (OSError, ValueError):  # standard output is gone already: nothing left to quieten
+            return
+
+
+def _print_result(args, result) -> None:
     result = _finite_record(result)
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
@@ -293,4 +352,53 @@ def main(argv=None) -> int:
     else:
         for key, value in result.items():
             print(f"{key}: {value}")
-    return 0
+    sys.stdout.flush()
+
+
+def _parse(parser, argv):
+    """``parser.parse_args``; what --help and --version printed is flushed here, where its errors are caught."""
+    try:
+        return parser.parse_args(argv)
+    except SystemExit:
+        sys.stdout.flush()
+        raise
+
+
+def _standard_output_failed(exc: OSError) -> int:
+    _quiet_standard_output()
+    if exc.errno == errno.EPIPE:  # the reader went away (| head): end quietly, as SIGPIPE would
+        return 141
+    return _error(f"standard output: {exc.strerror or exc}")
+
+
+def main(argv=None) -> int:
+    """Run the command line; returns the exit status (0; 2 for bad input or a file error; 130; 141)."""
+    saved_format = warnings.formatwarning
+    warnings.formatwarning = _format_warning  # one line per accuracy warning
+    try:
+        parser = build_parser()
+        try:
+            args = _parse(parser, argv)
+        except OSError as exc:  # printing --help or --version
+            return _standard_output_failed(exc)
+        except UsageError as exc:
+            return _error(exc)
+        try:
+            result = args.handler(args)
+        except OSError as exc:  # io.output's errors name the option and the path
+            if exc.errno == errno.EPIPE:  # --output /dev/stdout, a FIFO: the reader went away
+                _quiet_standard_output()
+                return 141
+            return _error(exc if exc.filename is not None else (exc.strerror or exc))
+        except (UsageError, ValueError) as exc:
+            return _error(exc)
+        try:
+            _print_result(args, result)
+        except OSError as exc:
+            return _standard_output_failed(exc)
+        return 0
+    except KeyboardInterrupt:
+        print(f"{PROG}: interrupted", file=sys.stderr)
+        return 130
+    finally:
+        warnings.formatwarning = saved_format

@@ -21,8 +21,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
-import tempfile
 
 import numpy as np
 
@@ -122,7 +120,7 @@ def _length(option: str, value) -> float:
     return units.si_value(option, value, "length")
 
 
-def history_si(args, specimen, analyse_file):
+def history_si(args, specimen):
     """``history`` with the specimen options: turning points in N m, or a lab CSV for ``--signal``."""
     from ..specimen import physical_record
 
@@ -132,9 +130,11 @@ def history_si(args, specimen, analyse_file):
         torques = [_torque_text(f"--turning-points[{i}]", v) for i, v in enumerate(args.turning_points)]
         return [physical_record(state.normalized.as_dict(), specimen) for state in
                 specimen.history(torques, method=args.method, n_terms=args.n_terms)]
-    if args.output is not None:
-        raise ValueError("--output is not available with the specimen options (its table is normalised); "
-                         "leave out the specimen options for it")
+    for option, value in (("--output", args.output), ("--states", args.states), ("--column", args.column)):
+        if value is not None:
+            raise ValueError(f"{option} is not available with the specimen options (the tables are normalised; "
+                             "the lab file names its columns by their units); leave out the specimen options for it")
+    from .history_signal import analyse_values
     from .lab_files import read_lab_columns
 
     label = f"--signal {args.signal}"
@@ -147,14 +147,11 @@ def history_si(args, specimen, analyse_file):
         raise ValueError(f"{label}: sample {i} (data row {i + 1}): torque {columns['torque'][i]:.6g} N m exceeds the "
                          f"gross-slip torque 2 f F a / 3 = {specimen.gross_slip_torque:.6g} N m: the cylinders spin, "
                          "there is no static solution")
-    handle, tmp = tempfile.mkstemp(suffix=".npy")
-    os.close(handle)
-    try:
-        np.save(tmp, np.clip(torque_star, -4.0 / 3.0, 4.0 / 3.0))
-        result = analyse_file(tmp, method=args.method, n_terms=args.n_terms, output=None,
-                              progress=not args.no_progress, full=args.json)
-    finally:
-        os.remove(tmp)
+    gate = 0.0 if args.gate is None else _torque_text("--gate", args.gate) / specimen.torque_scale
+    bin_width = None if args.bin_width is None else _torque_text("--bin-width", args.bin_width) / specimen.torque_scale
+    result = analyse_values(np.clip(torque_star, -4.0 / 3.0, 4.0 / 3.0), source=args.signal, method=args.method,
+                            n_terms=args.n_terms, gate=gate, bin_width=bin_width, progress=not args.no_progress,
+                            full=args.json)
     record = physical_record(result, specimen)
     record["columns"] = {"torque": columns["units"]["torque"], **({"time": columns["units"]["time"]}
                                                                   if "time" in columns["units"] else {})}

@@ -28,7 +28,7 @@ from .. import validation
 from ..histories.signal import MAX_GATE, MIN_BIN_WIDTH, analyse_signal
 from .signal_files import read_signal, write_table
 
-__all__ = ["analyse_file", "PROGRESS_SAMPLES", "STATES_IN_JSON", "DEFAULT_BIN_WIDTH", "UNITS"]
+__all__ = ["analyse_file", "analyse_values", "PROGRESS_SAMPLES", "STATES_IN_JSON", "DEFAULT_BIN_WIDTH", "UNITS"]
 
 #: Signals at least this long show a progress bar (unless disabled).
 PROGRESS_SAMPLES = 100_000
@@ -64,19 +64,33 @@ def _progress(enabled: bool, total: int):
 
 
 def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=None, gate=0.0, bin_width=None,
-                 progress: bool = True, full: bool = True) -> dict:
-    """Read ``path``, apply the gate and the memory rules, count the loops; the JSON-ready summary.
+                 progress: bool = True, full: bool = True, column=None, parents: bool = False) -> dict:
+    """Read the T* samples of ``path`` (``io.signal_files.read_signal``; ``column``: of a CSV with
+    several columns) and analyse them with ``analyse_values`` (the other arguments are its own)."""
+    label = f"--signal {path}"
+    values = read_signal(path, label=label, column=column)
+    return analyse_values(values, source=path, method=method, n_terms=n_terms, output=output, states=states,
+                          gate=gate, bin_width=bin_width, progress=progress, full=full, parents=parents)
+
+
+def analyse_values(values, *, source: str, method=None, n_terms=None, output=None, states=None, gate=0.0,
+                   bin_width=None, progress: bool = True, full: bool = True, parents: bool = False) -> dict:
+    """Apply the gate and the memory rules to the T* samples ``values``, count the loops; the JSON-ready summary.
 
     Parameters
     ----------
-    path : str
-        The signal (``io.signal_files.read_signal``).
+    values : array
+        The T* samples (checked by ``analyse_signal``).
+    source : str
+        The file they come from (``--signal``: named in errors, recorded in the tables' metadata,
+        never overwritten by them).
     method, n_terms :
         The monotonic solutions (``analyse_signal``).
     output, states : str, optional
         Table files to write: the per-sample table (columns ``sample``, ``torque``,
         ``gated_torque`` with a gate, ``rigid_rotation``, ``dissipated_energy``) and the
-        states (``SignalHistory.state_columns``); format by extension.
+        states (``SignalHistory.state_columns``); format by extension, through the one
+        writer (``io.output``: never over the input; ``parents``: create missing directories).
     gate : float
         Hysteresis gate (torque range in [0, 8/3], ``histories.signal.gated_signal``).
     bin_width : float, optional
@@ -92,18 +106,18 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=No
     gate = validation.real_number("--gate", gate, 0.0, MAX_GATE, " (a torque range; 0: no gate)")
     if bin_width is not None:
         bin_width = validation.real_number("--bin-width", bin_width, MIN_BIN_WIDTH, MAX_GATE, " (a torque range)")
-    label = f"--signal {path}"
-    values = read_signal(path, label=label)
+    label = f"--signal {source}"
     enabled = progress and values.size >= PROGRESS_SAMPLES
     with _progress(enabled, values.size * (1 + (output is not None))) as advance:
         advance("memory rules")
         result = analyse_signal(values, method=method, n_terms=n_terms, name=label, gate=gate, gate_name="--gate")
         advance("memory rules", values.size)
-        metadata = {"source": str(path), "method": result.method, "n_terms": result.n_terms, "gate": gate,
+        metadata = {"source": str(source), "method": result.method, "n_terms": result.n_terms, "gate": gate,
                     "samples": result.samples, "units": UNITS}
         if states is not None:
             advance("writing " + states)
-            write_table(states, result.state_columns(), metadata={**metadata, "table": "states at the turning points"})
+            write_table(states, result.state_columns(), metadata={**metadata, "table": "states at the turning points"},
+                        label="--states", inputs=(("--signal", source),), parents=parents)
         if output is not None:
             advance("per-sample table")
             omega, energy = result.sample_values()
@@ -112,7 +126,8 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=No
                 columns["gated_torque"] = result.signal
             columns.update(rigid_rotation=omega, dissipated_energy=energy)
             write_table(output, columns, metadata={**metadata, "table": "per sample"},
-                        progress=lambda rows: advance("writing " + output, rows))
+                        progress=lambda rows: advance("writing " + output, rows), label="--output",
+                        inputs=(("--signal", source),), parents=parents)
     short = result.index.size <= STATES_IN_JSON
     summary = {
         "samples": result.samples,

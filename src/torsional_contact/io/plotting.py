@@ -1,4 +1,4 @@
-"""Figure output for the workflow: vector PDF plus PNG preview, written atomically.
+"""Figure output for the workflow: vector PDF plus PNG preview, written through the one writer.
 
 Matplotlib chooses a non-interactive backend by itself when there is no display; this module
 does not change the backend of an interactive session that imports it.
@@ -24,13 +24,20 @@ def use_style(style_path=None) -> None:
 
 
 def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
-    """Save ``fig`` as PDF (and PNG) atomically, with the generating script in the metadata."""
-    with atomic_path(pdf_path) as tmp:
-        fig.savefig(tmp, format="pdf", metadata={"Creator": "torsional_contact workflow"})
-    if png_path:
-        with atomic_path(png_path) as tmp:
-            fig.savefig(tmp, format="png", dpi=dpi)
-    plt.close(fig)
+    """Save ``fig`` as PDF (and PNG), with the generating script in the metadata.
+
+    ``savefig`` writes a temporary file, which ``io.output.atomic_path`` renames onto a regular
+    file (or a symbolic link's target) or copies into a FIFO or device; a directory or a missing
+    directory is refused with ``io.output.OutputError`` naming --pdf or --png.
+    """
+    try:
+        with atomic_path(pdf_path, label="--pdf") as tmp:
+            fig.savefig(tmp, format="pdf", metadata={"Creator": "torsional_contact workflow"})
+        if png_path:
+            with atomic_path(png_path, label="--png") as tmp:
+                fig.savefig(tmp, format="png", dpi=dpi)
+    finally:
+        plt.close(fig)
 
 
 def figure_parser(doc: str, data: bool = False, quantities=None) -> argparse.ArgumentParser:

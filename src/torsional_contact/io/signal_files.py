@@ -1,9 +1,13 @@
-"""Torque signals on disk: reading a one-column text/CSV file or a ``.npy`` array, writing per-sample tables.
+"""Torque signals on disk: reading a text/CSV file or a ``.npy`` array, writing per-sample tables.
 
 Units: T* = 2T/(f F a); omega in f p0 / mu; energies in (f p0)^2 a^3 / mu.
 
-Reading is strict: every line (blank lines and lines starting with ``#`` aside) holds one
-finite number in [-4/3, 4/3]; the first line that does not is named in the ValueError.
+Reading is strict.  Text: blank lines and lines starting with ``#`` are skipped; the first
+remaining line is a header (column names) when one of its fields is not a number; fields are
+separated by commas, semicolons, tabs or blanks (the first line decides).  One column is read
+as it is; of several, ``column`` chooses one (a number from 1, or a header name).  Every value
+of the column must be a finite number in [-4/3, 4/3]; the first that is not is named, with its
+line, in the ValueError.  ``.npy``: a 1-d array, or a 2-d one whose ``column`` is read.
 Writing formats the numbers column by column with integer arithmetic (16 significant
 digits, relative rounding error below 1e-15), which is an order of magnitude faster than
 per-number string formatting for the 10^6-row tables of long signals.
@@ -26,7 +30,9 @@ from ..criteria import GROSS_SLIP_TORQUE
 
 __all__ = ["read_signal", "format_columns", "write_sample_table", "table_format", "write_table", "read_table"]
 
-_EXPECTED = "one torque T* in [-4/3, 4/3] per line"
+_EXPECTED = ("expected one torque T* in [-4/3, 4/3] per line, or a CSV column chosen with --column N|NAME; "
+             "a first line of names is a header; blank lines and lines starting with # are skipped")
+_DELIMITERS = (b",", b";", b"\t")
 
 
 def _check_values(label: str, values: np.ndarray, where) -> np.ndarray:
@@ -44,18 +50,61 @@ def _check_values(label: str, values: np.ndarray, where) -> np.ndarray:
     return np.clip(values, -GROSS_SLIP_TORQUE, GROSS_SLIP_TORQUE)
 
 
-def _read_npy(label: str, path: str) -> np.ndarray:
+def _column_number(label: str, column, count: int, names: list[str] | None) -> int:
+    """The 0-based index of ``column`` (a number from 1 or a header name) among ``count`` columns."""
+    if column is None:
+        if count == 1:
+            return 0
+        listed = ", ".join(names) if names else f"1 to {count}"
+        raise ValueError(f"{label}: {count} columns ({listed}): choose the torque with --column N|NAME "
+                         "(column= in Python)")
+    text = str(column).strip()
+    if isinstance(column, (int, np.integer)) or text.isdigit():
+        number = int(text)
+        if not 1 <= number <= count:
+            raise ValueError(f"--column must be a column number in [1, {count}] (columns count from 1) "
+                             f"for {label}, got {column!r}")
+        return number - 1
+    if names is None:
+        raise ValueError(f"--column {text!r} is a name, but {label} has no header line (give a number in "
+                         f"[1, {count}])")
+    if text not in names:
+        raise ValueError(f"--column must be a column number in [1, {count}] or one of the header's names "
+                         f"({', '.join(names)}) for {label}, got {text!r}")
+    return names.index(text)
+
+
+def _read_npy(label: str, path: str, column=None) -> np.ndarray:
     try:
         array = np.load(path, allow_pickle=False)
-    except (OSError, ValueError) as exc:
+    except (OSError, ValueError, EOFError) as exc:
         raise ValueError(f"{label}: cannot read a .npy array ({exc})") from None
-    if array.dtype.kind not in "fiu" or not (array.ndim == 1 or (array.ndim == 2 and array.shape[1] == 1)):
-        raise ValueError(f"{label}: expected a 1-d array of real numbers (T*), got dtype {array.dtype} and shape "
-                         f"{array.shape}")
-    return _check_values(label, array.astype(float).ravel(), lambda i: f"element {i}")
+    if array.dtype.kind not in "fiu" or array.ndim not in (1, 2):
+        raise ValueError(f"{label}: expected a 1-d array of real numbers (T*) or a 2-d one with --column, got "
+                         f"dtype {array.dtype} and shape {array.shape}")
+    if array.ndim == 2:
+        if array.shape[1] == 0:
+            raise ValueError(f"{label}: no samples (shape {array.shape})")
+        j = _column_number(label, column, array.shape[1], None)
+        return _check_values(label, array[:, j].astype(float), lambda i: f"element [{i}, {j}]")
+    if column is not None:
+        _column_number(label, column, 1, None)
+    return _check_values(label, array.astype(float), lambda i: f"element {i}")
 
 
-def _read_text(label: str, path: str) -> np.ndarray:
+def _fields(line: bytes, delimiter: bytes | None) -> list[bytes]:
+    return [field.strip().strip(b'"').strip() for field in line.split(delimiter)]
+
+
+def _is_number(field: bytes) -> bool:
+    try:
+        float(field)
+    except ValueError:
+        return False
+    return True
+
+
+def _read_text(label: str, path: str, column=None) -> np.ndarray:
     try:
         with open(path, "rb") as handle:
             lines = handle.read().split(b"\n")
@@ -63,44 +112,71 @@ def _read_text(label: str, path: str) -> np.ndarray:
         raise ValueError(f"{label}: cannot read ({exc.strerror})") from None
     if lines and not lines[-1].strip():
         lines.pop()
-    try:  # every line a number: the fast path
-        values = np.fromiter(map(float, lines), dtype=float, count=len(lines))
-        numbers = None
+    if column is None:
+        try:  # every line a number: the fast path
+            values = np.fromiter(map(float, lines), dtype=float, count=len(lines))
+        except ValueError:  # comments, a header, several columns or a bad line: read as a table below
+            values = None
+        if values is not None:
+            return _check_values(label, values, lambda i: f"line {i + 1}")
+    return _read_table(label, lines, column)
+
+
+def _read_table(label: str, lines: list[bytes], column) -> np.ndarray:
+    """A table with an optional header; ValueError naming the first line that does not hold a number."""
+    content = [n for n, raw in enumerate(lines) if raw.strip() and not raw.lstrip().startswith(b"#")]
+    if not content:
+        raise ValueError(f"{label}: no samples ({_EXPECTED})")
+    first = lines[content[0]].strip()
+    delimiter = next((d for d in _DELIMITERS if d in first), None)
+    fields = _fields(first, delimiter)
+    names = None
+    if not all(_is_number(f) for f in fields):
+        names = [f.decode("utf-8", errors="replace") for f in fields]
+        content = content[1:]
+    j = _column_number(label, column, len(fields), names)
+    body = [lines[n] for n in content]
+    try:  # numpy's parser: fast; its message is replaced by ours, naming the line, below
+        values = np.loadtxt(body, delimiter=None if delimiter is None else delimiter.decode(), usecols=j,
+                            comments=None, quotechar='"', dtype=float, ndmin=1)
     except ValueError:
-        values, numbers = _read_lines(label, lines)
-    return _check_values(label, values, lambda i: f"line {i + 1 if numbers is None else numbers[i]}")
+        values = None
+    if values is None or values.size != len(body):
+        values = np.empty(len(body))
+        for k, n in enumerate(content):
+            row = _fields(lines[n].strip(), delimiter)
+            where = f"{label} line {n + 1}"
+            if j >= len(row):
+                raise ValueError(f"{where}: {len(row)} field(s), column {j + 1} wanted ({_EXPECTED})")
+            try:
+                values[k] = float(row[j])
+            except ValueError:
+                shown = row[j].decode("utf-8", errors="replace")
+                raise ValueError(f"{where}: {shown[:40]!r} is not a number ({_EXPECTED})") from None
+    return _check_values(label, values, lambda i: f"line {content[i] + 1}")
 
 
-def _read_lines(label: str, lines: list[bytes]) -> tuple[np.ndarray, list[int]]:
-    """Line by line, skipping blank and comment lines; ValueError naming the first line that is not a number."""
-    values, numbers = [], []
-    for n, raw in enumerate(lines, start=1):
-        text = raw.strip()
-        if not text or text.startswith(b"#"):
-            continue
-        try:
-            values.append(float(text))
-        except ValueError:
-            shown = text.decode("utf-8", errors="replace")
-            raise ValueError(f"{label} line {n}: {shown[:40]!r} is not a number ({_EXPECTED})") from None
-        numbers.append(n)
-    return np.array(values, dtype=float), numbers
+def read_signal(path, label: str | None = None, column=None) -> np.ndarray:
+    """The T* samples of ``path``: a ``.npy`` array, or text with one number per line or a CSV column.
 
-
-def read_signal(path, label: str | None = None) -> np.ndarray:
-    """The T* samples of ``path``: a ``.npy`` array, or text with one number per line.
+    ``column``: which column of a table (a number from 1, or a name of its header line);
+    needed only when the file has several columns.
 
     Raises
     ------
     ValueError
         Naming the file and the line (text) or element (``.npy``) of the first sample that
-        is not a finite number in [-4/3, 4/3]; for an unreadable or empty file.
+        is not a finite number in [-4/3, 4/3]; for an unreadable or empty file, a table of
+        several columns without ``column``, or a ``column`` it does not have.
     """
     path = os.fspath(path)
     label = label or path
+    if "\0" in path:  # open() would say only "embedded null byte"
+        shown = label.replace("\0", "\\0")
+        raise ValueError(f"{shown}: cannot read (the path contains a NUL character)")
     if path.endswith(".npy"):
-        return _read_npy(label, path)
-    return _read_text(label, path)
+        return _read_npy(label, path, column)
+    return _read_text(label, path, column)
 
 
 # --------------------------------------------------------------------------- writing
@@ -169,13 +245,16 @@ def format_columns(columns, integer_columns=()) -> bytes:
     return table[table != 0].tobytes()
 
 
-def write_sample_table(path, header: str, columns, integer_columns=(), chunk: int = 200_000, progress=None) -> None:
-    """Write ``header`` and the CSV rows of ``columns`` to ``path`` atomically, ``chunk`` rows at a time."""
-    from ..provenance import atomic_path
+def write_sample_table(path, header: str, columns, integer_columns=(), chunk: int = 200_000, progress=None, *,
+                       label: str = "path", inputs=(), parents: bool = False) -> None:
+    """Write ``header`` and the CSV rows of ``columns`` to ``path``, ``chunk`` rows at a time, through the one
+    writer (``io.output.open_output``: atomic for a regular file, in place for a FIFO or device; ``label``,
+    ``inputs`` and ``parents`` as there)."""
+    from .output import open_output
 
     columns = [np.asarray(c) for c in columns]
     rows = columns[0].size
-    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
+    with open_output(path, "wb", label=label, inputs=inputs, parents=parents) as handle:
         handle.write(header.encode() + b"\n")
         for start in range(0, rows, chunk):
             handle.write(format_columns([c[start : start + chunk] for c in columns], integer_columns))
@@ -190,26 +269,31 @@ def table_format(path) -> str:
     return {".npz": "npz", ".npy": "npy"}.get(extension, "csv")
 
 
-def write_table(path, columns: dict, *, metadata: dict | None = None, progress=None) -> None:
-    """Write equal-length named ``columns`` to ``path`` atomically, in the format of its extension.
+def write_table(path, columns: dict, *, metadata: dict | None = None, progress=None, label: str = "path", inputs=(),
+                parents: bool = False) -> None:
+    """Write equal-length named ``columns`` to ``path`` through the one writer, in the format of its extension.
 
     ``.npz``: one array per column and ``metadata`` (``provenance`` of ``metadata``, a JSON
     string); ``.npy``: a structured array with one field per column; otherwise CSV with a
     header of the column names (integer columns as integers, ``write_sample_table``).
-    ``progress(rows)`` is called as CSV rows are written.
+    ``progress(rows)`` is called as CSV rows are written.  ``label``, ``inputs``, ``parents``: as
+    for ``io.output.open_output`` (the option named in errors, files never to overwrite, whether
+    to create missing directories).
     """
     import json
 
-    from ..provenance import atomic_path, provenance
+    from ..provenance import provenance
+    from .output import open_output
 
     names = list(columns)
     arrays = [np.asarray(columns[name]) for name in names]
     kind = table_format(path)
     if kind == "csv":
         integer_columns = tuple(j for j, a in enumerate(arrays) if a.dtype.kind in "iub")
-        write_sample_table(path, ",".join(names), arrays, integer_columns=integer_columns, progress=progress)
+        write_sample_table(path, ",".join(names), arrays, integer_columns=integer_columns, progress=progress,
+                           label=label, inputs=inputs, parents=parents)
         return
-    with atomic_path(path) as tmp, open(tmp, "wb") as handle:
+    with open_output(path, "wb", label=label, inputs=inputs, parents=parents) as handle:
         if kind == "npz":
             record = provenance(**(metadata or {}))
             np.savez(handle, **dict(zip(names, arrays, strict=True)), metadata=np.array(json.dumps(record)))

@@ -59,6 +59,8 @@ from .weak_form_mp import assemble, j2_zeros
 __all__ = [
     "DEFAULT_DIGITS",
     "GUARD_DIGITS",
+    "AFFORDABLE_TERMS",
+    "resolution_advice",
     "ReferenceSolution",
     "solve_reference",
     "reference_set",
@@ -71,6 +73,25 @@ DEFAULT_DIGITS = 50
 #: Extra working digits: the system loses about log10(cond) ~ 4 digits at N = 145;
 #: 20 guard digits leave a wide margin, which ``solve_reference`` verifies.
 GUARD_DIGITS = 20
+#: The most terms the reference is advised (and the command line allowed) to use: the assembly is
+#: O(N^2) multiple-precision products, the solve O(N^3), about a minute at N = 1000.
+AFFORDABLE_TERMS = 1000
+
+
+def resolution_advice(width) -> str:
+    """What to do when a stick disc or slip annulus of ``width`` (b or 1 - b) is not resolved.
+
+    The terms that resolve it (``terms_to_resolve``) when the reference can afford them
+    (``AFFORDABLE_TERMS``); otherwise the default method, which needs no resolution rule (its
+    small-stick-disc and small-slip expansions take over at the ends) -- never a count such as
+    n_terms >= 3e300 that no computer could use.
+    """
+    needed = terms_to_resolve(max(float(width), 1e-300))
+    if needed <= AFFORDABLE_TERMS:
+        return f"use n_terms >= {needed}"
+    return (f"no affordable n_terms resolves it (it needs more than {AFFORDABLE_TERMS}): use the default method "
+            "(solve(stick_radius=...), or `reference --method fast` for the converged solution in arbitrary "
+            "precision)")
 
 
 # --------------------------------------------------------------------------- solution
@@ -190,7 +211,7 @@ def solve_reference(
                 f"stick_radius={b_in!r} is not resolved by n_terms={n_terms}: the "
                 f"{'stick disc' if b < 0.5 else 'slip annulus'} is narrower than 10 wavelengths of the highest "
                 f"term; T* and omega are the truncated system's to {digits} digits, far from the "
-                f"problem's (use n_terms >= {float(terms_to_resolve(max(float(narrow), 1e-300))):.6g})",
+                f"problem's; {resolution_advice(narrow)}",
                 ResolutionWarning,
                 stacklevel=2,
             )
