@@ -42,7 +42,7 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
-from .monotonic import points, resolve
+from ..models import DEFAULT_MODEL, monotonic_model
 
 __all__ = ["validated_signal", "turning_point_indices", "SignalHistory", "analyse_signal"]
 
@@ -113,6 +113,8 @@ class SignalHistory:
         count * W(range): the energy each dissipated.
     method, n_terms :
         The monotonic solutions used.
+    model : str
+        The contact model (``models``).
     """
 
     samples: int
@@ -133,6 +135,7 @@ class SignalHistory:
     n_terms: int | None
     _pieces: dict = field(repr=False)
     _signal: np.ndarray = field(repr=False)
+    model: str = DEFAULT_MODEL
 
     @property
     def regime(self) -> list[str]:
@@ -183,7 +186,7 @@ class SignalHistory:
         origin_omega = np.where(p["origin"] >= 0, self.rigid_rotation[np.maximum(p["origin"], 0)], 0.0)
         g, d = p["g"][which], p["d"][which]
         tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, GROSS_SLIP_TORQUE)
-        _, omega_m, work = points(tau, self.method, self.n_terms)
+        _, omega_m, work = monotonic_model(self.model, self.method, self.n_terms).points(tau)
         omega = origin_omega[which] + d * g * omega_m
         with np.errstate(invalid="ignore"):  # inf - inf after spinning: the energy stays inf
             energy = p["energy_before"][which] + g * (work - p["work_start"][which])
@@ -196,15 +199,15 @@ def _finite(value):
     return value if math.isfinite(value) else None
 
 
-def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal") -> SignalHistory:
+def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str = "signal") -> SignalHistory:
     """States at the turning points of ``signal``, closed loops and energies (module docstring).
 
     Parameters
     ----------
     signal : array_like
         T* samples in [-4/3, 4/3], the history starting from the virgin interface.
-    method, n_terms :
-        As for ``history`` (default: the Abel-Fredholm method through ``curves``).
+    method, n_terms, model :
+        As for ``history`` (default: the cylinders, the Abel-Fredholm method through ``curves``).
     name : str
         Name of the signal in error messages.
 
@@ -218,12 +221,13 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal") -
     ValueError
         Naming ``name[i]`` for a bad sample; for an empty signal or a bad method.
     """
-    method, n_terms = resolve(method, n_terms)
+    source = monotonic_model(model, method, n_terms)
+    method, n_terms, points = source.method, source.n_terms, source.points
     values = validated_signal(name, signal)
     index = turning_point_indices(values)
     walk = _walk(values[index].tolist())
     taus = np.array(walk["tau"] + walk["stick_tau"] + walk["tau_a"] + walk["tau_b"])
-    b, omega_m, work = points(taus, method, n_terms)
+    b, omega_m, work = points(taus)
     n, m = len(walk["tau"]), len(walk["tau_a"])
     stick_b = b[n : 2 * n]
     omega_m_state, b_state = omega_m[:n], b[:n]
@@ -270,11 +274,12 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal") -
         cycle_mean=np.array(walk["cycle_mean"], dtype=float),
         cycle_state=np.array(walk["cycle_state"], dtype=int),
         cycle_count=counts,
-        cycle_energy=counts * 4.0 * points(0.5 * ranges, method, n_terms)[2] if ranges.size else np.zeros(0),
+        cycle_energy=counts * 4.0 * points(0.5 * ranges)[2] if ranges.size else np.zeros(0),
         method=method,
         n_terms=n_terms,
         _pieces=pieces,
         _signal=values,
+        model=source.model,
     )
 
 

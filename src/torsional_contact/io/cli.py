@@ -22,6 +22,7 @@ import warnings
 import numpy as np
 
 from .. import __version__
+from ..models import DEFAULT_MODEL, MODELS
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
 
@@ -87,8 +88,9 @@ def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
 
 
 def _cmd_solve(args) -> dict:
-    solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms)
-    return _profiles(solution.as_dict(), solution, args.radii)
+    solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms,
+                     model=args.model)
+    return _profiles({**solution.as_dict(), "model": args.model}, solution, args.radii)
 
 
 def _cmd_history(args):
@@ -100,14 +102,14 @@ def _cmd_history(args):
         if args.output is not None:
             raise UsageError("--output needs --signal (the per-sample table of a sampled signal)")
         torques = validation.torque_sequence("--turning-points", args.turning_points)
-        states = history(torques, method=args.method, n_terms=args.n_terms)
+        states = history(torques, method=args.method, n_terms=args.n_terms, model=args.model)
         fields = ("traction", "slip", "residual_traction")
         return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
     from .history_signal import analyse_file
 
-    return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
+    return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, model=args.model, output=args.output,
                         progress=not args.no_progress, full=args.json)
 
 
@@ -196,10 +198,13 @@ def _cmd_errata(args) -> list:
 
 
 def _add_solver_options(p) -> None:
-    """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
+    """--method, --n-terms, --radii, --model: shared by the subcommands that call ``solve``."""
     p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: most accurate)")
     p.add_argument("--n-terms", type=int, default=None, help=f"number of eigenfunctions (default {DEFAULT_N_TERMS})")
     p.add_argument("--radii", type=real_argument, nargs="+", help="also report traction and slip at these r/a")
+    p.add_argument("--model", choices=MODELS, default=DEFAULT_MODEL,
+                   help="cylinder (default): the flat-ended cylinders; half-space: two half-spaces under the same "
+                   "uniform pressure (closed-form: no --method, no --n-terms)")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -43,7 +43,8 @@ def _progress(enabled: bool):
         bar.close()
 
 
-def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress: bool = True, full: bool = True):
+def analyse_file(path: str, *, method=None, n_terms=None, model=None, output=None, progress: bool = True,
+                 full: bool = True):
     """Read ``path``, apply the memory rules, count closed loops; the JSON-ready result.
 
     With ``full`` the object has ``samples``, ``turning_points``, ``states`` (one per
@@ -60,7 +61,7 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress:
             bar.total = values.size * (2 if output else 1)
             bar.refresh()
         advance("memory rules")
-        result = analyse_signal(values, method=method, n_terms=n_terms, name=f"--signal {path}")
+        result = analyse_signal(values, method=method, n_terms=n_terms, model=model, name=f"--signal {path}")
         advance("memory rules", values.size)
         if output is not None:
             advance("per-sample table")
@@ -75,6 +76,7 @@ def analyse_file(path: str, *, method=None, n_terms=None, output=None, progress:
         "dissipated_energy": _finite(result.total_dissipated_energy),
         "method": result.method,
         "n_terms": result.n_terms,
+        "model": result.model,
     }
     if not full:
         return summary
