@@ -569,3 +569,30 @@ def test_command_line(capsys):
                  ("history", "--turning-points", "0", "1.5", "--model", "half-space")):
         code, text, err = _main(capsys, *args)
         assert code == 2 and text == "" and len(err.strip().splitlines()) == 1, args
+
+
+@pytest.mark.parametrize("b", [0.1, 0.5, 0.9])
+def test_direct_numerical_solution_of_the_slip_condition(b):
+    """Solve the slip condition of the superposition, int_r^1 beta'(c) dc / sqrt(c^2 - r^2) = pi / (4 r) on
+    b < r < 1, by collocation (no Abel inversion): beta' = g(c) / sqrt(1 - c^2) with g a Chebyshev series on
+    [b, 1]; c^2 = r^2 + (1 - r^2) sin^2(theta) turns the operator into int_0^(pi/2) g(c) / c dtheta."""
+    # g = 1/(2c) has its pole at c = 0, x = -1 - 2b/(1 - b): Bernstein rho = 1.9 at b = 0.1, 64 terms ~1e-16
+    n = 64
+    nodes = np.cos(np.pi * (np.arange(n) + 0.5) / n)  # collocation points in [-1, 1]
+    r = b + 0.5 * (1 - b) * (nodes + 1)
+    x, w = gauss_legendre(160)
+    theta = np.pi / 4 * (x + 1)
+    c = np.sqrt(r[:, None] ** 2 + (1 - r[:, None] ** 2) * np.sin(theta[None, :]) ** 2)
+    basis = np.polynomial.chebyshev.chebvander(2 * (c - b) / (1 - b) - 1, n - 1)  # (n, 64, n)
+    matrix = np.einsum("jqk,q->jk", basis / c[:, :, None], np.pi / 4 * w)
+    coefficients = np.linalg.solve(matrix, np.pi / (4 * r))
+    # Omega = int_b^1 g / sqrt(1 - c^2) dc and T* = (32/(3 pi)) int_b^1 c^3 g / sqrt(1 - c^2) dc, c = cos(phi)
+    phi = 0.5 * np.arccos(b) * (x + 1)
+    cc = np.cos(phi)
+    g = np.polynomial.chebyshev.chebval(2 * (cc - b) / (1 - b) - 1, coefficients)
+    omega = 0.5 * np.arccos(b) * np.sum(w * g)
+    torque = 32 / (3 * np.pi) * 0.5 * np.arccos(b) * np.sum(w * cc**3 * g)
+    # measured <= 1e-14 (conditioning of the collocation matrix times eps); 1e-12
+    assert omega == pytest.approx(cf.rigid_rotation(b), rel=1e-12)
+    assert torque == pytest.approx(cf.torque(b), rel=1e-12)
+    np.testing.assert_allclose(g, 0.5 / cc, rtol=1e-12)
