@@ -22,6 +22,7 @@ from torsional_contact import history, solve
 from torsional_contact.criteria import spinning_deficit
 from torsional_contact.half_space import closed_form as cf
 from torsional_contact.half_space import fields as hs_fields
+from torsional_contact.half_space import interface as hs_interface
 from torsional_contact.histories import analyse_signal, frictional_work
 from torsional_contact.histories.energy import dissipation_from_loop_area as cylinder_loop_area
 from torsional_contact.histories.energy import dissipation_per_cycle as cylinder_dissipation
@@ -133,14 +134,14 @@ def test_stick_traction_and_slip_against_the_superposition(b):
         s_ref = [float(_mp_slip(mp.mpf(r), mp.mpf(b))) for r in annulus]
         sigma_ref = [float(_mp_sigma_rt(mp.mpf(r), mp.mpf(b))) for r in annulus[:-1]]
     # (H7): arctan of a ratio of square roots, ~6 eps; 2e-14 absolute (f p0) is 10x above the worst seen
-    np.testing.assert_allclose(cf.interface_traction(stick, b), q_ref, rtol=0, atol=2e-14)
+    np.testing.assert_allclose(hs_interface.interface_traction(stick, b), q_ref, rtol=0, atol=2e-14)
     # (H8) by the slip quadrature of solvers.interface: ~1e-14 of the slip scale; 1e-13 absolute
     scale = max(s_ref)
-    np.testing.assert_allclose(cf.interface_slip(annulus, b), s_ref, rtol=0, atol=1e-13 * max(1.0, scale))
+    np.testing.assert_allclose(hs_interface.interface_slip(annulus, b), s_ref, rtol=0, atol=1e-13 * max(1.0, scale))
     # (H9): elliptic integrals (r^2 >= 1/2) or 40-point Gauss; measured <= 2e-14 (r = 0.99 of the annulus,
     # sigma_rt ~ 1.5): 3e-13 absolute
-    np.testing.assert_allclose(cf.interface_sigma_rt(annulus[:-1], b), sigma_ref, rtol=0, atol=3e-13)
-    assert cf.interface_sigma_rt(1.0, b) == math.inf  # the step of the traction at the contact edge
+    np.testing.assert_allclose(hs_interface.interface_sigma_rt(annulus[:-1], b), sigma_ref, rtol=0, atol=3e-13)
+    assert hs_interface.interface_sigma_rt(1.0, b) == math.inf  # the step of the traction at the contact edge
 
 
 @pytest.mark.parametrize("b", [0.3, 0.7])
@@ -160,7 +161,7 @@ def test_stick_condition_through_the_green_function(b):
             rm = mp.mpf(r)
             u = omega * rm - mp.quad(lambda rho, rm=rm: traction(rho) * rho * _mp_green(rm, rho),
                                      sorted({mp.mpf(0), rm, bm, mp.mpf(1)}))
-            expected = 0.0 if r < b else 0.5 * float(cf.interface_slip(r, b))
+            expected = 0.0 if r < b else 0.5 * float(hs_interface.interface_slip(r, b))
             # tanh-sinh at 20 digits on the log singularity, against double-precision q, Omega and s:
             # measured <= 2e-16
             assert float(u) == pytest.approx(expected, abs=1e-14)
@@ -555,7 +556,8 @@ def test_command_line(capsys):
     record = json.loads(out.stdout)
     assert record["model"] == "half-space" and record["method"] is None
     assert record["stick_radius"] == pytest.approx(cf.stick_radius(1.0), rel=1e-15)
-    assert record["slip"][1] == pytest.approx(float(cf.interface_slip(1.0, record["stick_radius"])), rel=1e-14)
+    slip = float(hs_interface.interface_slip(1.0, record["stick_radius"]))
+    assert record["slip"][1] == pytest.approx(slip, rel=1e-14)
     code, text, _ = _main(capsys, "solve", "--torque", "1.23", "--json")
     assert code == 0 and json.loads(text)["model"] == "cylinder"
     code, text, _ = _main(capsys, "history", "--turning-points", "0", "1.0", "-0.5", "--model", "half-space", "--json")

@@ -3,7 +3,8 @@
 ``solve(..., model="half-space")`` and ``history(..., model="half-space")`` return the same
 state classes as the cylinder model, in the same units (docs/conventions.md).  The
 derivation (Jaeger's superposition of Reissner-Sagoci rigid-disc rotations) and the closed
-forms (H1)-(H14) are in ``half_space.closed_form``; the fields in the bodies (a verified
+forms (H1)-(H14) are in ``half_space.closed_form`` (the interface fields (H7)-(H9) in
+``half_space.interface``); the fields in the bodies (a verified
 quadrature of the superposition) in ``half_space.fields``; the state classes and the
 monotonic interface of the memory rules in ``half_space.model``.
 """

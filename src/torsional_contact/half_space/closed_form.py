@@ -128,6 +128,7 @@ of the superposition (H2)-(H4) and of the Abel form, the stick condition of the 
 (H7) through the half-space Green's function (``solvers.kernels.halfspace_kernel``), the
 torque balance T* = 4 int q r^2 dr, the Taylor coefficients against the closed form in
 mpmath, the fields against mpmath quadrature, the equilibrium equation and the interface.
+The interface fields (H7)-(H9) are evaluated in ``half_space.interface``.
 """
 
 from __future__ import annotations
@@ -137,11 +138,9 @@ import math
 from fractions import Fraction
 
 import numpy as np
-from scipy import special
 
 from ..criteria import GROSS_SLIP_TORQUE, spinning_deficit
 from ..quadrature import gauss_legendre
-from ..solvers import interface
 from ..validation import TORQUE_TOLERANCE as SPIN_TOLERANCE
 
 __all__ = [
@@ -165,9 +164,6 @@ __all__ = [
     "compliance",
     "points",
     "state",
-    "interface_traction",
-    "interface_slip",
-    "interface_sigma_rt",
 ]
 
 #: dOmega/dT* of the bonded contact (T* -> 0), eq. (H14) at b = 1.
@@ -187,8 +183,6 @@ _SERIES_TERMS = 44
 #: x = 2 psi above which b(tau) is solved in e = pi - x (near spinning).
 _SPLIT_X = 0.5 * math.pi
 _NEWTON_STEPS = 12
-#: Gauss nodes of (H9) for r^2 < 1/2 (smooth integrand, no cancellation).
-_SHEAR_NODES = 40
 
 
 # --------------------------------------------------------------------------- special functions
@@ -477,72 +471,3 @@ def compliance(tau):
     b = np.asarray(stick_radius(tau), dtype=float)
     with np.errstate(divide="ignore"):
         return _scalar(BONDED_COMPLIANCE / b**3, tau)
-
-
-# --------------------------------------------------------------------------- interface fields
-def interface_traction(r, b: float):
-    """sigma_zt(r, 0) / (f p0): (H7) on the stick disc r < b, 1 on the annulus (positive torque)."""
-    r = np.asarray(r, dtype=float)
-    if b >= 1.0:
-        return np.zeros_like(r)
-    stick = r < b
-    rs = np.where(stick, r, 0.0)
-    height = np.sqrt(np.maximum((b - rs) * (b + rs), 0.0))
-    inner = (2.0 / np.pi) * np.arctan2(rs * math.sqrt((1.0 - b) * (1.0 + b)), height)
-    return np.where(stick, inner, 1.0)
-
-
-def interface_slip(r, b: float):
-    """s(r) = 2 u(r, 0+) (f p0 a / mu), eq. (H8): 0 on the stick disc, +inf for r > 0 at b = 0.
-
-    The Abel integral with D(cos psi) = cos(psi) [artanh(sin psi_b) - artanh(sin psi)] by the
-    quadrature of ``solvers.interface.slip_integral`` (cosh substitution at t = r, panels graded
-    toward t = 0 for small stick discs); D is analytic in psi on [0, psi_b].
-    """
-    r = np.asarray(r, dtype=float)
-    if b >= 1.0:
-        return np.zeros_like(r)
-    if b <= 0.0:
-        return np.where(r > 0, math.inf, 0.0)
-    psi_b, chi_b = angles_from_radius(b)
-    level = 2.0 * float(_rotation_from_angles(psi_b, chi_b))  # artanh(sin psi_b) = arcsech b
-
-    def d_of_psi(psi):
-        return np.cos(psi) * (level - np.arcsinh(np.tan(psi)))
-
-    return 2.0 * interface.slip_integral(r, float(b), d_of_psi)
-
-
-def interface_sigma_rt(r, b: float):
-    """sigma_rt(r, 0) / (f p0), eq. (H9): 0 on the stick disc, +inf at the contact edge r = 1.
-
-    r^2 < 1/2: Gauss-Legendre on the positive integrand (smooth there); r^2 >= 1/2: the
-    incomplete elliptic integrals F, E (no cancellation there), K(m) from 1 - m = (1 - r)(1 + r).
-    """
-    r = np.asarray(r, dtype=float)
-    flat = r.ravel()
-    out = np.zeros_like(flat)
-    if b >= 1.0:
-        return out.reshape(r.shape)
-    slipping = flat > b
-    edge = slipping & (flat >= 1.0)
-    out[edge] = math.inf
-    inner = slipping & ~edge & (flat * flat < 0.5)
-    outer = slipping & ~edge & ~inner
-    if inner.any():
-        x, w = gauss_legendre(_SHEAR_NODES)
-        ri = flat[inner]
-        phi_b = np.arcsin(np.minimum(b / ri, 1.0))
-        half = 0.5 * (0.5 * np.pi - phi_b)
-        phi = phi_b[:, None] + half[:, None] * (x[None, :] + 1.0)
-        s2 = np.sin(phi) ** 2
-        out[inner] = (2.0 / np.pi) * half * ((s2 / np.sqrt(1.0 - ri[:, None] ** 2 * s2)) @ w)
-    if outer.any():
-        ro = flat[outer]
-        m = ro * ro
-        m1 = (1.0 - ro) * (1.0 + ro)
-        phi_b = np.arcsin(np.minimum(b / ro, 1.0))
-        complete = special.ellipkm1(m1) - special.ellipe(m)
-        partial = special.ellipkinc(phi_b, m) - special.ellipeinc(phi_b, m)
-        out[outer] = (2.0 / np.pi) * (complete - partial) / m
-    return out.reshape(r.shape)

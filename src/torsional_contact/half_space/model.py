@@ -28,7 +28,7 @@ from ..criteria import GROSS_SLIP_TORQUE
 from ..models import HALF_SPACE as MODEL
 from ..models import validated
 from ..solution import Solution, _flat_points
-from . import closed_form, fields
+from . import closed_form, fields, interface
 
 __all__ = ["MODEL", "HalfSpaceState", "HalfSpaceSolution", "solve_half_space", "HalfSpaceMonotonic"]
 
@@ -45,15 +45,15 @@ class HalfSpaceState:
 
     def traction(self, r):
         """sigma_zt(r, 0) / (f p0), eq. (H7); 1 on the slip annulus."""
-        return closed_form.interface_traction(r, self.stick_radius)
+        return interface.interface_traction(r, self.stick_radius)
 
     def displacement(self, r):
         """u_theta(r, 0+) = s(r)/2 (f p0 a / mu), eq. (H8)."""
-        return 0.5 * closed_form.interface_slip(r, self.stick_radius)
+        return 0.5 * interface.interface_slip(r, self.stick_radius)
 
     def sigma_rt(self, r):
         """sigma_rt(r, 0) / (f p0), eq. (H9) (log-singular at the contact edge r = 1)."""
-        return closed_form.interface_sigma_rt(r, self.stick_radius)
+        return interface.interface_sigma_rt(r, self.stick_radius)
 
     def dini(self, z_min, tolerance):
         return None  # no Dini series: the fields come from ``half_space.fields``
