@@ -598,3 +598,25 @@ def test_direct_numerical_solution_of_the_slip_condition(b):
     assert omega == pytest.approx(cf.rigid_rotation(b), rel=1e-12)
     assert torque == pytest.approx(cf.torque(b), rel=1e-12)
     np.testing.assert_allclose(g, 0.5 / cc, rtol=1e-12)
+
+
+def test_apparent_friction_of_a_half_space_fit():
+    """kappa = f_fit / f solves kappa^2 W_hs(A / kappa) = W_cyl(A) (comparison.(C1)); > 1, falling with A."""
+    from torsional_contact.half_space.comparison import apparent_friction_ratio, energy_per_cycle
+
+    ranges = np.array([2.01, 2.2, 2.4, 2.6, 2.66])
+    kappa = np.array([apparent_friction_ratio(a) for a in ranges])
+    for a, k in zip(ranges, kappa, strict=True):
+        fitted = k * k * energy_per_cycle(a / k, "half-space")
+        assert fitted == pytest.approx(energy_per_cycle(a, "cylinder"), rel=1e-12)  # Brent to xtol 1e-14 in ln
+    assert np.all(kappa > 1) and np.all(np.diff(kappa) < 0)
+    assert apparent_friction_ratio(1.5) == math.inf and apparent_friction_ratio(2.0) == math.inf
+    assert apparent_friction_ratio(8 / 3) == 1.0
+    # the uniqueness argument: the logarithmic slope of W_hs is >= 4 (its small-amplitude value)
+    x = np.linspace(1e-3, 8 / 3 - 1e-6, 4000)
+    slope = np.gradient(np.log(cf.dissipation_per_cycle(x)), np.log(x))
+    assert np.min(slope) > 4 - 1e-4  # centred differences on the grid: O(h^2) ~ 1e-5
+    with pytest.raises(ValueError, match="torque_range must lie in"):
+        apparent_friction_ratio(3.0)
+    with pytest.raises(ValueError, match="model must be one of"):
+        energy_per_cycle(1.0, "wedge")

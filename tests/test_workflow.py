@@ -160,6 +160,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
          {"fig_schematic", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig_published_vs_complete",
           "fig_von_mises",
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
+          "fig_half_space_curves", "fig_half_space_energy",
               "paper", "report", "all"}),
     ],
 )
