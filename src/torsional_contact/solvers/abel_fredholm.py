@@ -339,8 +339,9 @@ class FastSolution:
         Measured against the 30-digit reference (tests/test_sigma_rt.py): 2e-14 to 2.5e-12 for
         1 - r >= 1e-4 (1 - b); closer to the corner the error grows like ln(1/(1 - r)) times the
         slope error (5e-10) of the spinning table E_1 at t = 1 (``kernels.spinning_transform``;
-        the same for both formulas): 3e-11 at 1 - r = 1e-6 (1 - b), 6e-10 at 1e-8 (1 - b), where
-        sigma_rt itself falls to 0 like (1 - r) ln(1/(1 - r)).  0 on the stick disc and at r = 1.
+        the same for both formulas): 3e-11 at 1 - r = 1e-6 (1 - b), 6e-10 at 1e-8 (1 - b), at most
+        (5e-10/pi) ln(1/(1 - r)) < 1e-8 absolute, where sigma_rt itself falls to 0 like
+        (1 - r) ln(1/(1 - r)).  0 on the stick disc and at r = 1.
         """
         b = self.stick_radius
         if b < 0.5:
