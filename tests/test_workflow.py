@@ -161,6 +161,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
           "fig_von_mises",
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
           "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit",
+          "fig_half_space_curves", "fig_half_space_energy",
               "paper", "report", "all"}),
     ],
 )

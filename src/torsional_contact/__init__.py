@@ -42,6 +42,7 @@ _EXPORTS = {
     "ResolutionWarning": "diagnostics",
     "TruncationWarning": "diagnostics",
     "UnphysicalResultWarning": "diagnostics",
+    "NoiseLimitedFitWarning": "diagnostics",
 }
 
 __all__ = [*_EXPORTS, "__version__"]

@@ -37,10 +37,7 @@ from .solvers.abel_fredholm import FastSolution
 from .solvers.weak_form import SeriesSolution
 from .special.zeros import bessel_j2_zeros
 
-__all__ = ["Bilateral", "Series", "AbelFredholm", "Asymptotic", "Spinning", "DIFFERENCE_STEP"]
-
-#: Step of the central differences for sigma_rt(r, 0) of the Abel-Fredholm method.
-DIFFERENCE_STEP = 1e-5
+__all__ = ["Bilateral", "Series", "AbelFredholm", "Asymptotic", "Spinning"]
 
 
 @dataclass(frozen=True)
@@ -140,35 +137,12 @@ class AbelFredholm(_Scalars):
         return self.solution.interface_displacement(r)
 
     def sigma_rt(self, r):
-        """du/dr - u/r of the interface displacement (0 on the stick disc).
+        """du/dr - u/r of the interface displacement (0 on the stick disc and at r = 1, eq. 9).
 
-        b < 1/2: ``FastSolution.interface_sigma_rt`` (quadrature of F7 and K5, no
-        differences: a step of 1e-5 would not resolve a small stick disc).  b >= 1/2:
-        second-order differences, central inside the slip annulus, one-sided within the
-        step of r = b or r = 1 (~1e-9; ~1e-5 within 1e-4 of r = 1, where the corner makes u
-        less smooth); exactly 0 at r = 1 (traction-free side, eq. 9).
+        ``FastSolution.interface_sigma_rt``: quadratures of (F7) for every stick radius, no
+        differences (they were used for b >= 1/2 before: ~1e-9, ~1e-5 next to r = 1).
         """
-        b = self.stick_radius
-        if b < 0.5:
-            return self.solution.interface_sigma_rt(r)
-        out = np.zeros_like(r)
-        slipping = r > b
-        x = r[slipping]
-        if x.size:
-            h = min(DIFFERENCE_STEP, 0.25 * (1.0 - b))
-            u = self.solution.interface_displacement
-            ux = u(x)
-            derivative = np.empty_like(x)
-            central = (x - h >= b) & (x + h <= 1.0)
-            forward = (x - h < b) & ~central
-            backward = ~central & ~forward
-            xc, xf, xb = x[central], x[forward], x[backward]
-            derivative[central] = (u(xc + h) - u(xc - h)) / (2 * h)
-            derivative[forward] = (-3 * ux[forward] + 4 * u(xf + h) - u(xf + 2 * h)) / (2 * h)
-            derivative[backward] = (3 * ux[backward] - 4 * u(xb - h) + u(xb - 2 * h)) / (2 * h)
-            out[slipping] = derivative - ux / x
-        out[r == 1.0] = 0.0
-        return out
+        return self.solution.interface_sigma_rt(r)
 
     def dini(self, z_min, tolerance):
         n = self.n_terms if self.n_terms is not None else dini_terms(z_min, tolerance)

@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import asymptotics, fields, validation
+from . import asymptotics, fields, models, validation
 from .backends import AbelFredholm, Asymptotic, Bilateral, Series, Spinning
 from .criteria import GROSS_SLIP_TORQUE
 from .diagnostics import TruncationWarning, UnphysicalResultWarning
@@ -273,7 +273,7 @@ def _fast_backend(b: float, n_terms, solution=None):
     return AbelFredholm(solution, n_terms)
 
 
-def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None) -> Solution:
+def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None, model=None) -> Solution:
     """Solve the partial-slip torsion problem for a stick radius or a torque.
 
     Parameters
@@ -295,6 +295,12 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
     tolerance : float, optional
         Absolute accuracy of the stresses (f p0) and displacements (f p0 a / mu) off the
         interface; default 1e-12.  A figure needs ~1e-4 and sums fewer terms.
+    model : {"cylinder", "half-space"}, optional
+        ``cylinder`` (default): the two flat-ended cylinders.  ``half-space``: two
+        elastically similar half-spaces under the same uniform pressure over r < a, in the
+        same units (``half_space``; closed-form: no ``method``, no ``n_terms``); it slips
+        at any torque (b < 1 for T* > 0) and ``rigid_rotation`` is the far-field rotation
+        of each body, half the relative twist.
 
     Returns
     -------
@@ -307,13 +313,18 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
         numbers, |torque| > 4/3 (the cylinders spin: no static solution), both or
         neither of stick_radius/torque, n_terms outside [1, MAX_SERIES_TERMS] (weak
         forms) or [1, fields.MAX_FIELD_TERMS] (``fast``), tolerance not in [0, 1], an
-        unknown method, or an inverse problem that the weak form's n_terms cannot resolve.
+        unknown method, or an inverse problem that the weak form's n_terms cannot resolve;
+        an unknown model, or a method or n_terms with model="half-space".
 
     Warns
     -----
     AccuracyWarning (ResolutionWarning, IllConditioningWarning, TruncationWarning) and
     UnphysicalResultWarning, each naming what is lost; see the README.
     """
+    if model is not None and models.validated(model, method, n_terms) != models.CYLINDER:
+        from .half_space import solve_half_space
+
+        return solve_half_space(stick_radius, torque, method=method, n_terms=n_terms, tolerance=tolerance)
     method = validation.choice("method", DEFAULT_METHOD if method is None else method, METHODS)
     if n_terms is not None or method != "fast":
         maximum = fields.MAX_FIELD_TERMS if method == "fast" else MAX_SERIES_TERMS

@@ -21,9 +21,10 @@ Beyond the table
   (1 < tau < 1 + 1.3e-5): the small-slip expansion of ``asymptotics``, exactly as ``solve``
   uses it: T* - 1 = (2/pi) delta + delta^2 / 8 (S1; the table's own fit gives 0.12500 +- 1e-5
   for the second coefficient), omega = (2/3) delta^3 + (pi/16) delta^4 (S2), and
-  W_mono = (pi^4/12) e^3 (1 + 0.04 e), e = T* - 1, whose small correction is fitted to the
-  table (relative error ~1e-2 e < 2e-7 where used).  There the solver itself loses digits
-  (T* noise up to 1.5e-12 next to b_max), so the expansion is the more accurate of the two.
+  W_mono = (pi^4/12) e^3 (1 + (1/2 - 3 pi^2/64) e), e = T* - 1 (S8, derived from (S1), (S2)
+  and the loop-area identity; relative error ~2.8 e^2 |ln e| < 6e-9 where used).  There the
+  solver itself loses digits (T* noise up to 1.5e-12 next to b_max), so the expansion is the
+  more accurate of the two.
 * tau within 4 ulp of 4/3 is spinning (as in ``solve``): b = 0, omega = W_mono = +inf.
 * By radius, 0 < b < 1e-6: 4/3 - T* and omega, W_mono continued from the first panel by
   their small-disc forms (b^3 and ln(1/b) growth, relative corrections O(b^2)).
@@ -45,14 +46,13 @@ __all__ = ["MonotonicCurves", "monotonic_curves", "add_by_torque"]
 
 #: Relative distance to 4/3 that counts as spinning (``validation.TORQUE_TOLERANCE``).
 SPIN_TOLERANCE = 4 * np.finfo(float).eps
-#: e coefficient of W_mono / ((pi^4/12) e^3) - 1 at small slip annuli (fitted, see the docstring).
-ONSET_WORK = 0.04
+#: e coefficient of W_mono / ((pi^4/12) e^3) - 1 at small slip annuli: 1/2 - 3 pi^2/64, eq. (S8) of ``asymptotics``.
+ONSET_WORK = asymptotics.ONSET_WORK_COEFFICIENT
 #: Slip annuli narrower than this use the small-slip expansion (``asymptotics``), as ``solve`` does.
 ONSET_DELTA = asymptotics.ONSET_SCALARS
 #: b at which the by-torque panels switch from tau to u = (4/3 - tau)^(1/3).
 U_SPLIT_RADIUS = 0.262144
 _OMEGA_ONSET = math.pi**3 / 12.0
-_WORK_ONSET = math.pi**4 / 12.0
 _BY_TORQUE_POINTS = 65
 _CURVES_BY_TORQUE = ("stick_radius", "rigid_rotation", "loading_work")
 
@@ -63,8 +63,8 @@ def _onset_radius(excess):
 
 
 def _onset_work(excess):
-    """W_mono at small slip annuli (module docstring), e = T* - 1."""
-    return _WORK_ONSET * excess**3 * (1.0 + ONSET_WORK * excess)
+    """W_mono at small slip annuli, e = T* - 1: eq. (S8) of ``asymptotics``."""
+    return asymptotics.onset_work(excess)
 
 
 class MonotonicCurves:
@@ -237,7 +237,7 @@ def _by_torque(curves: MonotonicCurves) -> dict:
     radius_edges = curves.by_radius["torque"].edges
     split = int(np.argmin(np.abs(radius_edges - U_SPLIT_RADIUS)))
     u_edges = np.cbrt(curves.torque_gap(radius_edges[: split + 1]))
-    t_edges = np.sort(curves.torque(radius_edges[split:]))
+    t_edges = np.sort(curves.by_radius["torque"](radius_edges[split:]))  # the table's own T*(b) at its edges
     x = np.cos(np.pi * np.arange(_BY_TORQUE_POINTS) / (_BY_TORQUE_POINTS - 1))
     out = {"u_edges": u_edges.tolist(), "t_edges": t_edges.tolist(), "u_panels": {}, "t_panels": {}}
     for key, edges, curve, target in (

@@ -105,7 +105,7 @@ def _radial_rule(states: Sequence[InterfaceState]):
     """
     if states[0].n_terms is not None and states[0].method != "fast":
         return gauss_legendre_panels(0.0, 1.0, 20.0 / bessel_j2_zeros(states[0].n_terms)[-1])
-    radii = {point(tau, s.method, s.n_terms)[0] for s in states for _, tau in s.terms}
+    radii = {s.source.point(tau)[0] for s in states for _, tau in s.terms}
     return gauss_legendre_panels(0.0, 1.0, 0.05, sorted(radii))
 
 

@@ -73,9 +73,10 @@ def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[Inte
     energy dissipated up to it.
     """
     t = validation.torque("torque", torque)
+    _require_cylinder(state, "sample_path")
     if t == state.torque:
         return ()
-    method, n_terms = state.method, state.n_terms
+    method, n_terms, source = state.method, state.n_terms, state.source
     d = _sign(t - state.torque)
     stack = _start(state, d)
     current, energy = state.torque, state.dissipated_energy
@@ -90,16 +91,24 @@ def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[Inte
         taus += _increments(b_a, b_b, n_points, method, n_terms)
         for tau in taus:
             w = energy + g * (point(tau, method, n_terms)[2] - work_a)
-            out.append(_compose(stack, d, tau, origin + d * g * tau, w, method, n_terms))
+            out.append(_compose(stack, d, tau, origin + d * g * tau, w, source))
         energy += g * (work_b - work_a)
         if not closes:
-            out.append(_compose(stack, d, tau_b, t, energy, method, n_terms))
+            out.append(_compose(stack, d, tau_b, t, energy, source))
             return tuple(out)
-        out.append(_closure(stack, d, end, energy, method, n_terms))
+        out.append(_closure(stack, d, end, energy, source))
         if end == t:
             return tuple(out)
         _pop(stack)
         current = end
+
+
+def _require_cylinder(state: InterfaceState, name: str) -> None:
+    """The dense sampling and compliance here use the cylinders' curves: refuse other models clearly."""
+    if state.model != "cylinder":
+        raise ValueError(f"{name} is available for model='cylinder' only, got a state of model={state.model!r} "
+                         "(half-space: sample the torques with history(); compliance: half_space.closed_form."
+                         "compliance)")
 
 
 # --------------------------------------------------------------------------- hysteresis
@@ -167,6 +176,7 @@ def tangent_compliance(state: InterfaceState, *, step: float = 1e-4) -> float:
     point (see ``InterfaceState.front``) it is the slope of the outer branch that
     continues beyond it.
     """
+    _require_cylinder(state, "tangent_compliance")
     tau = state.terms[-1][1]
     b = point(tau, state.method, state.n_terms)[0]
     if b >= 1.0:

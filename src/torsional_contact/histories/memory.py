@@ -86,6 +86,12 @@ Independent check: ``verification.incremental`` solves the incremental mixed pro
 directly in the weak form; tests/test_history.py compares it with (M) and its
 nested versions.
 
+Models.  The rules use only the uncoupling (rule 1), a stick radius b(tau) that falls
+and a traction q_m(r; tau) that grows with tau: they hold as they stand for the half-space
+model (``half_space``: b < 1 for every tau > 0, so every reversal slips and nothing shakes
+down; the cylinders' range 2 is 0 there).  A state reaches the monotonic solutions only
+through the model's ``point`` / ``solution`` (``models.monotonic_model``: ``state.source``).
+
 Energies, loops and dissipation: ``energy`` and ``loops``.
 """
 
@@ -101,8 +107,9 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
+from ..models import DEFAULT_MODEL, monotonic_model
 from ..solution import Solution
-from .monotonic import DEFAULT_METHOD, monotonic, point, resolve
+from .monotonic import DEFAULT_METHOD, monotonic
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -149,7 +156,8 @@ class InterfaceState:
         The state as sum_j w_j mono(tau_j): pairs (w_j, tau_j) (weights +-1 on the virgin
         curve, +-2 on branches).
     method, n_terms :
-        The monotonic solutions' method (``fast``: n_terms None) and resolution.
+        The monotonic solutions' method (``fast``: n_terms None) and resolution (None, None
+        for the half-space model).
     front : float
         Slip front of the (Masing) branch the state lies on; remembered as the slip
         front of this state if the torque reverses here.  Equal to ``stick_radius``
@@ -161,6 +169,8 @@ class InterfaceState:
     dissipated_energy : float
         Work against friction since the virgin state, first loading included
         ((f p0)^2 a^3 / mu; rule 5 of the module docstring); +inf after spinning.
+    model : str
+        "cylinder" (default) or "half-space" (``models``): whose monotonic solutions.
     """
 
     torque: float
@@ -173,6 +183,12 @@ class InterfaceState:
     front: float = 1.0
     rigid_rotation: float = 0.0
     dissipated_energy: float = 0.0
+    model: str = DEFAULT_MODEL
+
+    @property
+    def source(self):
+        """The model's monotonic solution for this state's (model, method, n_terms) (``models``)."""
+        return monotonic_model(self.model, self.method, self.n_terms)
 
     @property
     def regime(self) -> str:
@@ -193,7 +209,8 @@ class InterfaceState:
     @functools.cached_property
     def components(self) -> tuple[tuple[float, Solution], ...]:
         """The pairs (w_j, mono(tau_j)) with the monotonic solutions (built on first use, cached)."""
-        return tuple((w, monotonic(tau, method=self.method, n_terms=self.n_terms)) for w, tau in self.terms)
+        source = self.source
+        return tuple((w, source.solution(tau)) for w, tau in self.terms)
 
     def traction(self, r):
         """sigma_zt(r, 0) / (f p0)."""
@@ -238,6 +255,7 @@ class InterfaceState:
             "direction": self.direction,
             "method": self.method,
             "n_terms": self.n_terms,
+            "model": self.model,
         }
 
 
@@ -245,10 +263,10 @@ def _finite_or_none(value: float):
     return value if math.isfinite(value) else None
 
 
-def initial_state(*, method=None, n_terms=None) -> InterfaceState:
+def initial_state(*, method=None, n_terms=None, model=None) -> InterfaceState:
     """The virgin interface: T* = 0, no slip, nothing remembered, no energy dissipated."""
-    method, n_terms = resolve(method, n_terms)
-    return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), method, n_terms, 1.0, 0.0, 0.0)
+    source = monotonic_model(model, method, n_terms)
+    return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), source.method, source.n_terms, 1.0, 0.0, 0.0, source.model)
 
 
 def _sign(x: float) -> int:
@@ -280,9 +298,11 @@ def _branch(stack) -> tuple[float, float]:
     return (stack[-1].torque, 2.0) if stack else (0.0, 1.0)
 
 
-def _compose(stack, direction, tau, torque, energy, method, n_terms) -> InterfaceState:
-    """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau."""
-    b, omega, _ = point(tau, method, n_terms)
+def _compose(stack, direction, tau, torque, energy, source) -> InterfaceState:
+    """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau.
+
+    ``source``: the model's monotonic solution (``models.monotonic_model``)."""
+    b, omega, _ = source.point(tau)
     if stack:
         origin = stack[-1].state
         terms = origin.terms + ((2.0 * direction, tau),)
@@ -290,10 +310,11 @@ def _compose(stack, direction, tau, torque, energy, method, n_terms) -> Interfac
     else:
         terms = ((float(direction), tau),)
         omega = direction * omega
-    return InterfaceState(torque, b, direction, tuple(stack), terms, method, n_terms, b, omega, energy)
+    return InterfaceState(torque, b, direction, tuple(stack), terms, source.method, source.n_terms, b, omega, energy,
+                          source.model)
 
 
-def _closure(stack, direction, torque, energy, method, n_terms) -> InterfaceState:
+def _closure(stack, direction, torque, energy, source) -> InterfaceState:
     """State where the branch from the top of ``stack`` reaches its limit exactly (rule 4).
 
     It is the earlier state at that torque (the inner loop cancels exactly: the same
@@ -301,11 +322,11 @@ def _closure(stack, direction, torque, energy, method, n_terms) -> InterfaceStat
     single remembered point; the stick radius is that of the closing branch; the
     dissipated energy is the one accumulated on the way.
     """
-    closing, _, _ = point(abs(torque - stack[-1].torque) / 2.0, method, n_terms)
+    closing, _, _ = source.point(abs(torque - stack[-1].torque) / 2.0)
     if len(stack) >= 2:
         earlier = stack[-2].state
     else:
-        earlier = _compose([], direction, abs(torque), torque, energy, method, n_terms)
+        earlier = _compose([], direction, abs(torque), torque, energy, source)
     return dataclasses.replace(earlier, torque=torque, stick_radius=closing, direction=direction,
                                dissipated_energy=energy)
 
@@ -333,7 +354,7 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     t = validation.torque("torque", torque)
     if t == state.torque:
         return state
-    method, n_terms = state.method, state.n_terms
+    source = state.source
     d = _sign(t - state.torque)
     stack = _start(state, d)
     current, energy = state.torque, state.dissipated_energy
@@ -342,16 +363,17 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
         closes = bool(stack) and d * (t - _limit(stack)) >= 0
         end = _limit(stack) if closes else t
         tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, GROSS_SLIP_TORQUE)
-        energy += g * (point(tau_b, method, n_terms)[2] - point(tau_a, method, n_terms)[2])
+        energy += g * (source.point(tau_b)[2] - source.point(tau_a)[2])
         if not closes:
-            return _compose(stack, d, tau_b, t, energy, method, n_terms)
+            return _compose(stack, d, tau_b, t, energy, source)
         if end == t:
-            return _closure(stack, d, t, energy, method, n_terms)
+            return _closure(stack, d, t, energy, source)
         _pop(stack)
         current = end
 
 
-def history(torques, *, method=None, n_terms=None, start: InterfaceState | None = None) -> tuple[InterfaceState, ...]:
+def history(torques, *, method=None, n_terms=None, model=None,
+            start: InterfaceState | None = None) -> tuple[InterfaceState, ...]:
     """States after each step of a torque history, starting from the virgin interface.
 
     Parameters
@@ -365,8 +387,11 @@ def history(torques, *, method=None, n_terms=None, start: InterfaceState | None 
         The monotonic solutions: ``fast`` (default, the Abel-Fredholm method through the
         interpolants of ``curves``) or a weak form at ``n_terms`` (default 145).
     n_terms : int, optional
+    model : {"cylinder", "half-space"}, optional
+        The contact model (``models``; default the cylinders).  The half-space has no
+        method: the rules are the same, with its closed-form monotonic solution.
     start : InterfaceState, optional
-        Continue from this state instead of the virgin interface (its method is kept).
+        Continue from this state instead of the virgin interface (its model and method are kept).
 
     Returns
     -------
@@ -376,10 +401,11 @@ def history(torques, *, method=None, n_terms=None, start: InterfaceState | None 
     ------
     ValueError
         Naming ``torques[i]`` for a non-finite entry or |T*| > 4/3; for an empty history;
-        for an unknown method or n_terms < 1.
+        for an unknown method or n_terms < 1; for an unknown model, or a method or n_terms
+        with model="half-space".
     """
     values = validation.torque_sequence("torques", torques)
-    state = initial_state(method=method, n_terms=n_terms) if start is None else start
+    state = initial_state(method=method, n_terms=n_terms, model=model) if start is None else start
     out = []
     for t in values:
         state = advance(state, t)

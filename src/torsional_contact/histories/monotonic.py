@@ -28,7 +28,8 @@ from ..curves import monotonic_curves
 from ..quadrature import gauss_legendre_panels
 from ..solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve
 
-__all__ = ["DEFAULT_METHOD", "resolve", "monotonic", "register", "point", "points", "series_loading_work"]
+__all__ = ["DEFAULT_METHOD", "resolve", "monotonic", "register", "point", "points", "series_loading_work",
+           "CylinderMonotonic"]
 
 _ONSET_ULPS = 8
 
@@ -116,3 +117,25 @@ def points(tau, method: str, n_terms: int | None) -> tuple[np.ndarray, np.ndarra
         return curves.stick_radius(tau), curves.rotation(tau), curves.work(tau)
     rows = np.array([_series_point(float(t), method, n_terms) for t in tau.ravel()]).reshape(*tau.shape, 3)
     return rows[..., 0], rows[..., 1], rows[..., 2]
+
+
+class CylinderMonotonic:
+    """The cylinders' monotonic solution for one (method, n_terms), behind the interface of
+    ``models.monotonic_model``: ``point``, ``points``, ``solution`` (the functions above)."""
+
+    model = "cylinder"
+
+    def __init__(self, method: str, n_terms: int | None):
+        self.method, self.n_terms = method, n_terms
+
+    def __repr__(self) -> str:
+        return f"CylinderMonotonic(method={self.method!r}, n_terms={self.n_terms!r})"
+
+    def point(self, tau: float) -> tuple[float, float, float]:
+        return point(tau, self.method, self.n_terms)
+
+    def points(self, tau):
+        return points(tau, self.method, self.n_terms)
+
+    def solution(self, tau) -> Solution:
+        return monotonic(tau, method=self.method, n_terms=self.n_terms)

@@ -64,9 +64,9 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
+from ..models import DEFAULT_MODEL, monotonic_model
 from . import stack_walk
 from .gate import MAX_GATE, gated_signal
-from .monotonic import points, resolve
 from .samples import turning_point_indices, validated_signal
 
 __all__ = [
@@ -140,6 +140,8 @@ class SignalHistory:
         Turning points of the signal removed by the gate.
     method, n_terms :
         The monotonic solutions used.
+    model : str
+        The contact model (``models``).
     """
 
     samples: int
@@ -164,6 +166,7 @@ class SignalHistory:
     dropped_turning_points: int
     _pieces: dict = field(repr=False)
     _signal: np.ndarray = field(repr=False)
+    model: str = DEFAULT_MODEL
 
     @property
     def memory(self) -> RememberedPoints:
@@ -286,7 +289,7 @@ class SignalHistory:
         origin_omega = np.where(p["origin"] >= 0, self.rigid_rotation[np.maximum(p["origin"], 0)], 0.0)
         g, d = p["g"][which], p["d"][which]
         tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, GROSS_SLIP_TORQUE)
-        _, omega_m, work = points(tau, self.method, self.n_terms)
+        _, omega_m, work = monotonic_model(self.model, self.method, self.n_terms).points(tau)
         with np.errstate(invalid="ignore"):  # inf - inf after spinning (omega: replaced below; energy stays inf)
             omega = origin_omega[which] + d * g * omega_m
         # a sample at a turning point where a loop closed exactly is that earlier state (or the mirrored
@@ -312,7 +315,7 @@ def _bin(values: np.ndarray, width: float) -> np.ndarray:
     return i.astype(np.int64)
 
 
-def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", gate=0.0,
+def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str = "signal", gate=0.0,
                    gate_name: str = "gate") -> SignalHistory:
     """States at the turning points of ``signal``, closed loops and energies (module docstring).
 
@@ -320,8 +323,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     ----------
     signal : array_like
         T* samples in [-4/3, 4/3], the history starting from the virgin interface.
-    method, n_terms :
-        As for ``history`` (default: the Abel-Fredholm method through ``curves``).
+    method, n_terms, model :
+        As for ``history`` (default: the cylinders, the Abel-Fredholm method through ``curves``).
     name : str
         Name of the signal in error messages.
     gate : float
@@ -341,7 +344,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     ValueError
         Naming ``name[i]`` for a bad sample; for an empty signal, a bad method or gate.
     """
-    method, n_terms = resolve(method, n_terms)
+    curves = monotonic_model(model, method, n_terms)
+    method, n_terms, points = curves.method, curves.n_terms, curves.points
     values = validated_signal(name, signal)
     gate = validation.real_number(gate_name, gate, 0.0, MAX_GATE)
     dropped = 0
@@ -357,8 +361,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     pieces = stack_walk.assemble_pieces(torque, direction, walk)
     last = pieces["last"]
 
-    _, _, work_a = points(pieces["tau_a"], method, n_terms)
-    b_b, omega_b, work_b = points(pieces["tau_b"], method, n_terms)
+    _, _, work_a = points(pieces["tau_a"])
+    b_b, omega_b, work_b = points(pieces["tau_b"])
     g = pieces["g"]
     with np.errstate(invalid="ignore"):
         piece_work = g * (work_b - work_a)
@@ -373,7 +377,7 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
     source = pieces["origin"][last].copy()
     mirrored = np.flatnonzero(closing == -1)
     if mirrored.size:  # on the virgin curve at -T_1: tau = |T|, g = 1, origin the virgin state
-        b_m, omega_m, _ = points(np.abs(torque[mirrored]), method, n_terms)
+        b_m, omega_m, _ = points(np.abs(torque[mirrored]))
         front[mirrored] = b_m
         delta[mirrored] = direction[mirrored] * 1.0 * omega_m
         source[mirrored] = -1
@@ -415,11 +419,12 @@ def analyse_signal(signal, *, method=None, n_terms=None, name: str = "signal", g
         cycle_mean=means,
         cycle_state=states,
         cycle_count=counts,
-        cycle_energy=counts * 4.0 * points(0.5 * ranges, method, n_terms)[2] if ranges.size else np.zeros(0),
+        cycle_energy=counts * 4.0 * points(0.5 * ranges)[2] if ranges.size else np.zeros(0),
         method=method,
         n_terms=n_terms,
         gate=gate,
         dropped_turning_points=int(dropped),
         _pieces=sample_pieces,
         _signal=values,
+        model=curves.model,
     )

@@ -31,6 +31,7 @@ import warnings
 import numpy as np
 
 from .. import __version__
+from ..models import DEFAULT_MODEL, MODELS
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
 from . import cli_units
@@ -114,8 +115,9 @@ def _cmd_solve(args) -> dict:
     args.torque = cli_units.plain_number("--torque", args.torque)
     args.stick_radius = cli_units.plain_number("--stick-radius", args.stick_radius)
     _radii(args.radii)
-    solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms)
-    return _profiles(solution.as_dict(), solution, args.radii)
+    solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms,
+                     model=args.model)
+    return _profiles({**solution.as_dict(), "model": args.model}, solution, args.radii)
 
 
 def _cmd_history(args):
@@ -135,7 +137,7 @@ def _cmd_history(args):
                 raise UsageError(f"{option} needs --signal (it applies to a sampled signal)")
         torques = validation.torque_sequence("--turning-points", args.turning_points)
         _radii(args.radii)
-        states = history(torques, method=args.method, n_terms=args.n_terms)
+        states = history(torques, method=args.method, n_terms=args.n_terms, model=args.model)
         fields = ("traction", "slip", "residual_traction")
         return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
     if args.radii is not None:
@@ -150,7 +152,7 @@ def _cmd_history(args):
         raise UsageError(f"--states and --output name the same file ({args.output}): give two paths")
     for option, path in tables:  # refuse a bad table path before the analysis, not after it
         resolve_output(path, label=option, inputs=(("--signal", args.signal),), parents=args.parents)
-    return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, output=args.output,
+    return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, model=args.model, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
                         progress=not args.no_progress, full=args.json, column=args.column, parents=args.parents)
 
@@ -245,12 +247,15 @@ NULL_EPILOG = ("JSON has no infinity: a number that is not finite prints as null
 
 
 def _add_solver_options(p) -> None:
-    """--method, --n-terms, --radii: shared by the subcommands that call ``solve``."""
+    """--method, --n-terms, --radii, --model: shared by the subcommands that call ``solve``."""
     p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: fast, the most accurate)")
     p.add_argument("--n-terms", type=int, default=None,
                    help=f"published and complete weak forms: number of eigenfunctions (default {DEFAULT_N_TERMS}); "
                    "not used by the default method (fast: the interface values need no truncation)")
     p.add_argument("--radii", type=real_argument, nargs="+", help="also report traction and slip at these r/a")
+    p.add_argument("--model", choices=MODELS, default=DEFAULT_MODEL,
+                   help="cylinder (default): the flat-ended cylinders; half-space: two half-spaces under the same "
+                   "uniform pressure (closed-form: no --method, no --n-terms)")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -63,18 +63,18 @@ def _progress(enabled: bool, total: int):
         bar.close()
 
 
-def analyse_file(path: str, *, method=None, n_terms=None, output=None, states=None, gate=0.0, bin_width=None,
-                 progress: bool = True, full: bool = True, column=None, parents: bool = False) -> dict:
+def analyse_file(path: str, *, method=None, n_terms=None, model=None, output=None, states=None, gate=0.0,
+                 bin_width=None, progress: bool = True, full: bool = True, column=None, parents: bool = False) -> dict:
     """Read the T* samples of ``path`` (``io.signal_files.read_signal``; ``column``: of a CSV with
     several columns) and analyse them with ``analyse_values`` (the other arguments are its own)."""
     label = f"--signal {path}"
     values = read_signal(path, label=label, column=column)
-    return analyse_values(values, source=path, method=method, n_terms=n_terms, output=output, states=states,
-                          gate=gate, bin_width=bin_width, progress=progress, full=full, parents=parents)
+    return analyse_values(values, source=path, method=method, n_terms=n_terms, model=model, output=output,
+                          states=states, gate=gate, bin_width=bin_width, progress=progress, full=full, parents=parents)
 
 
-def analyse_values(values, *, source: str, method=None, n_terms=None, output=None, states=None, gate=0.0,
-                   bin_width=None, progress: bool = True, full: bool = True, parents: bool = False) -> dict:
+def analyse_values(values, *, source: str, method=None, n_terms=None, model=None, output=None, states=None,
+                   gate=0.0, bin_width=None, progress: bool = True, full: bool = True, parents: bool = False) -> dict:
     """Apply the gate and the memory rules to the T* samples ``values``, count the loops; the JSON-ready summary.
 
     Parameters
@@ -84,7 +84,7 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, output=Non
     source : str
         The file they come from (``--signal``: named in errors, recorded in the tables' metadata,
         never overwritten by them).
-    method, n_terms :
+    method, n_terms, model :
         The monotonic solutions (``analyse_signal``).
     output, states : str, optional
         Table files to write: the per-sample table (columns ``sample``, ``torque``,
@@ -110,9 +110,11 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, output=Non
     enabled = progress and values.size >= PROGRESS_SAMPLES
     with _progress(enabled, values.size * (1 + (output is not None))) as advance:
         advance("memory rules")
-        result = analyse_signal(values, method=method, n_terms=n_terms, name=label, gate=gate, gate_name="--gate")
+        result = analyse_signal(values, method=method, n_terms=n_terms, model=model, name=label, gate=gate,
+                                gate_name="--gate")
         advance("memory rules", values.size)
-        metadata = {"source": str(source), "method": result.method, "n_terms": result.n_terms, "gate": gate,
+        metadata = {"source": str(source), "model": result.model, "method": result.method, "n_terms": result.n_terms,
+                    "gate": gate,
                     "samples": result.samples, "units": UNITS}
         if states is not None:
             advance("writing " + states)
@@ -140,6 +142,7 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, output=Non
         "loop_energy": _finite(result.loop_energy),
         "method": result.method,
         "n_terms": result.n_terms,
+        "model": result.model,
         "states_file": None if states is None else str(states),
         "output_file": None if output is None else str(output),
     }

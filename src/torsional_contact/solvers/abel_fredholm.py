@@ -325,19 +325,36 @@ class FastSolution:
         return _chebyshev_coefficients(values, CORRECTION_POINTS)
 
     def interface_sigma_rt(self, r):
-        """sigma_rt(r, 0) = u' - u/r in f p0 for b < 1/2, from (F7) without differences:
+        """sigma_rt(r, 0) = u' - u/r in f p0 from (F7), without differences.
 
-            sigma_rt = (2/pi) int_(phi_b)^(pi/2) sin^2(phi) [k(x) - x m'(x)] dphi,  x = r sin(phi),
+        b < 1/2: with x = r sin(phi), phi_b = arcsin(b/r) (D(b) = 0 by F3 removes the
+        boundary term) and k of ``kernels.spinning_shear_kernel``,
 
-        phi_b = arcsin(b/r) (D(b) = 0 by F3 removes the boundary term), k of
-        ``kernels.spinning_shear_kernel``; the k-part is the spinning (K5) minus its
-        integral over [0, phi_b] (x <= b < 1/2, where k is smooth).  0 on the stick disc
-        and at r = 1.
+            sigma_rt = (2/pi) int_(phi_b)^(pi/2) sin^2(phi) [k(x) - x m'(x)] dphi,
+
+        the k-part being the spinning (K5) minus its integral over [0, phi_b] (x <= b < 1/2,
+        where k is smooth).  b >= 1/2 (where x reaches the corner t -> 1 and k cancels):
+        (2/(pi r^2)) int_b^r t^2 (D' - D/t) / sqrt(r^2 - t^2) dt with D and dD/dpsi from the
+        Chebyshev series of D in psi = arccos t (``interface.face_shear_from_slip_integrand``).
+        Measured against the 30-digit reference (tests/test_sigma_rt.py): 2e-14 to 2.5e-12 for
+        1 - r >= 1e-4 (1 - b); closer to the corner the error grows like ln(1/(1 - r)) times the
+        slope error (5e-10) of the spinning table E_1 at t = 1 (``kernels.spinning_transform``;
+        the same for both formulas): 3e-11 at 1 - r = 1e-6 (1 - b), 6e-10 at 1e-8 (1 - b), at most
+        (5e-10/pi) ln(1/(1 - r)) < 1e-8 absolute, where sigma_rt itself falls to 0 like
+        (1 - r) ln(1/(1 - r)).  0 on the stick disc and at r = 1.
         """
         b = self.stick_radius
-        if not b < 0.5:
-            raise ValueError(f"interface_sigma_rt is for stick discs b < 1/2, got stick_radius={b!r}")
-        return interface.face_shear(r, b, self._correction_chebyshev)
+        if b < 0.5:
+            return interface.face_shear(r, b, self._correction_chebyshev)
+        return interface.face_shear_from_slip_integrand(r, b, self._d_and_slope)
+
+    def _d_and_slope(self, psi):
+        """D(cos psi) and dD/dpsi from the series of ``_slip_chebyshev`` (b >= 1/2: D itself)."""
+        psi_b = math.acos(self.stick_radius)
+        y = 2.0 * psi / psi_b - 1.0
+        coefficients = self._slip_chebyshev
+        return (chebyshev.chebval(y, coefficients),
+                chebyshev.chebval(y, chebyshev.chebder(coefficients)) * (2.0 / psi_b))
 
     # -- Dini amplitudes ----------------------------------------------------------------
     def abel_transform(self, t):

@@ -16,7 +16,7 @@ from ..quadrature import gauss_legendre
 from . import kernels
 
 __all__ = ["log_gap", "chebyshev_coefficients", "stick_traction", "slip_integral", "face_shear",
-           "INNER_EXTRA", "SLIP_PANEL_NODES", "SIGMA_RT_NODES"]
+           "face_shear_from_slip_integrand", "INNER_EXTRA", "SLIP_PANEL_NODES", "SIGMA_RT_NODES"]
 
 #: Gauss nodes of the inner rule of (F9) beyond the number of Chebyshev terms of G_Y.
 INNER_EXTRA = 32
@@ -154,3 +154,27 @@ def face_shear(r, b: float, correction_series):
         rest = 0.5 * (0.5 * np.pi - phi_b) * ((np.sin(upper) ** 2 * x_up * m_prime) @ weights)
         out[slipping] = kernels.spinning_shear(x_r) - (2.0 / np.pi) * (stick_part + rest)
     return out.reshape(r.shape)
+
+
+def face_shear_from_slip_integrand(r, b: float, d_and_slope_of_psi):
+    """sigma_rt(r, 0) = du/dr - u/r of (F7) for any 0 < b < 1, from D and dD/dpsi (psi = arccos t):
+
+        sigma_rt(r, 0) = (2/(pi r^2)) int_b^r t^2 E(t) / sqrt(r^2 - t^2) dt,   E = dD/dt - D/t,
+
+    (t = r sin(phi) in (F7); the boundary term at phi_b vanishes since D(b) = 0 by F3), i.e.
+    ``slip_integral`` with D replaced by t E(t) = -cos(psi) D_psi / sin(psi) - D, divided by r.
+    ``d_and_slope_of_psi`` returns (D, D_psi) at psi.  D_psi vanishes at psi = 0 (t = 1: no
+    sqrt(1 - t) term, or sigma_rt would grow like ln(1/(1 - r)) at the free side), so E is
+    finite there.  0 on the stick disc and at r = 1 (eq. 9).
+    """
+    r = np.asarray(r, dtype=float)
+
+    def integrand(psi):
+        d, slope = d_and_slope_of_psi(psi)
+        return -np.cos(psi) * slope / np.sin(psi) - d
+
+    out = np.zeros(r.shape)
+    inside = (r > b) & (r < 1.0)
+    if np.any(inside):
+        out[inside] = slip_integral(r[inside], b, integrand) / r[inside]
+    return out

@@ -31,6 +31,7 @@ import time
 import warnings
 from dataclasses import dataclass, field
 
+import flint
 import mpmath
 
 from ..diagnostics import AccuracyWarning
@@ -46,6 +47,7 @@ __all__ = [
     "rotation_digits_lost",
     "solve_reference_abel_fredholm",
     "reference_set_abel_fredholm",
+    "face_shear_arb",
 ]
 
 #: Significant digits of the reference by default.
@@ -130,6 +132,17 @@ class AbelFredholmReference:
         """Slip s(r) in f p0 a / mu at radii in [0, 1] (decimal strings or mpf), eq. (F7)."""
         return self._profile("slip", radii, self.fine)
 
+    def sigma_rt(self, radii, state=None) -> list:
+        """sigma_rt(r, 0)/(f p0) at radii in [0, 1] (decimal strings or mpf): ``face_shear_arb``.
+
+        ``state``: the finer solve by default (``coarse`` for the error estimate of a comparison).
+        """
+        state = self.fine if state is None else state
+        exact = self._radii(radii, state)
+        values = face_shear_arb(state, exact)
+        with working_digits(state.work_digits):
+            return [arb_to_mp(v) for v in values]
+
     def _profiles(self, radii) -> dict:
         """Traction and slip of both solves at ``radii`` (mpf lists, keys fine_/coarse_)."""
         return {f"{name}_{kind}": self._profile(kind, radii, state)
@@ -189,6 +202,51 @@ class AbelFredholmReference:
                     if extended:
                         record["extended"][kind] = [mpmath.nstr(v, fine.work_digits) for v in values[f"fine_{kind}"]]
         return record
+
+
+class _ShearProxy:
+    """Stands in for an ``AbelFredholmState`` in its slip quadrature (F7), with D(t) replaced by t E(t)."""
+
+    def __init__(self, state):
+        self.state = state
+        self.stick_radius = state.stick_radius
+        self.work_digits = state.work_digits
+        self.step = flint.arb(10) ** (-(state.work_digits // 3))
+
+    def _d_function(self, t_points) -> list:
+        """t E(t) = t D'(t) - D(t) with D' = -D_psi / sin(psi), D_psi by central differences in psi = arccos t.
+
+        D is analytic in psi on [0, arccos b] (the corner's (1 - t)^(3/2) terms are odd powers of
+        psi), so the differences lose h^2 |d^3 D / d psi^3| / 6 ~ 10^(-2 W/3) and rounding
+        10^(-W) / h ~ 10^(-2 W/3) at W working digits.
+        """
+        h = self.step
+        psi = [t.acos() for t in t_points]
+        d = self.state._d_function(t_points)  # noqa: SLF001 - the reference's own D of (F7)
+        plus = self.state._d_function([(p + h).cos() for p in psi])  # noqa: SLF001
+        minus = self.state._d_function([(p - h).cos() for p in psi])  # noqa: SLF001
+        out = []
+        for t, p, dv, dp, dm in zip(t_points, psi, d, plus, minus, strict=True):
+            d_psi = (dp - dm) / (2 * h)
+            out.append(-t * d_psi / p.sin() - dv)
+        return out
+
+
+def face_shear_arb(state, radii) -> list:
+    """sigma_rt(r, 0) = du/dr - u/r at exact radii (arb list), from (F7) in arbitrary precision.
+
+    With t = r sin(phi), u(r, 0) = (2/pi) int_phi_b^(pi/2) sin(phi) D(r sin phi) dphi and D(b) = 0 (F3):
+
+        sigma_rt(r, 0) = (2/(pi r^2)) int_b^r t^2 E(t) / sqrt(r^2 - t^2) dt,   E = dD/dt - D/t,
+
+    i.e. the slip integral of (F7) with D replaced by t E(t), divided by 2 r (the state's own
+    quadrature, ``AbelFredholmState.slip_arb``).  0 on the stick disc and at r = 1 (eq. 9).
+    """
+    proxy = _ShearProxy(state)
+    with working_digits(state.work_digits):
+        inside = [r if r < 1 else flint.arb(0) for r in radii]
+        halves = type(state).slip_arb(proxy, inside)
+        return [+(v / (2 * r)) if r < 1 and v != 0 else flint.arb(0) for v, r in zip(halves, radii, strict=True)]
 
 
 def rotation_digits_lost(stick_radius) -> int:

@@ -1,0 +1,50 @@
+"""Half-spaces against finite cylinders: torque against stick radius, slip-annulus width and the
+contact's extra rotation against torque.
+
+Units: b in a; T* = 2T/(f F a); rotations in f p0 / mu.  Cylinders: the Abel-Fredholm curves
+(``curves``); half-spaces: the closed forms of ``half_space.closed_form``.  The cylinders'
+extra rotation is 2 omega (beyond the uniform twist of a monolithic shaft, 0 in stick); the
+half-spaces' is their relative twist phi = 2 Omega, which includes the bonded contact's
+elastic compliance 3 pi T*/16, and phi - 3 pi T*/16 is the part due to slip.
+"""
+
+import numpy as np
+
+from torsional_contact.curves import monotonic_curves
+from torsional_contact.half_space import closed_form as hs
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+
+
+def main():
+    p = figure_parser(__doc__)
+    p.add_argument("--n-points", type=int, required=True)
+    a = p.parse_args()
+    curves = monotonic_curves()
+    b = np.linspace(0.0, 1.0, a.n_points)
+    tau = np.linspace(0.0, 4 / 3, a.n_points)[1:-1]
+    use_style(a.style)
+    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(7.2, 2.7))
+    left.plot(b, curves.torque(b), label="cylinders")
+    left.plot(b, hs.torque(b), "--", label="half-spaces")
+    left.set_xlabel(r"stick radius $b/a$")
+    left.set_ylabel(r"$T^* = 2T/(fFa)$")
+    left.legend(fontsize=7)
+    middle.semilogy(tau, 1 - curves.stick_radius(tau), label="cylinders")
+    middle.semilogy(tau, 1 - hs.stick_radius(tau), "--", label="half-spaces")
+    middle.set_ylim(1e-6, 1.5)
+    middle.set_xlabel(r"$T^*$")
+    middle.set_ylabel(r"slip-annulus width $1 - b/a$")
+    middle.legend(fontsize=7)
+    right.plot(tau, 2 * curves.rotation(tau), label=r"cylinders $2\omega$")
+    right.plot(tau, 2 * hs.rotation(tau), "--", label=r"half-spaces $\phi = 2\Omega$")
+    right.plot(tau, 2 * hs.rotation(tau) - 2 * hs.BONDED_COMPLIANCE * tau, ":", label=r"$\phi - 3\pi T^*/16$")
+    right.set_ylim(0, 3)
+    right.set_xlabel(r"$T^*$")
+    right.set_ylabel(r"extra rotation $\mu/(fp_0)$")
+    right.legend(fontsize=7, loc="upper left")
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,49 @@
+"""Energy per cycle against the torque range for half-spaces and cylinders (log-log), and the
+friction coefficient a half-space fit of the cylinders' energy returns.
+
+Units: torque range A = Delta T* = 2 Delta T/(f F a); energy per cycle in (f p0)^2 a^3 / mu.
+Half-spaces: W = (27 pi^4/131072) A^4 at small A (eq. H13 of ``half_space.closed_form``);
+cylinders: W = 0 for A <= 2, (pi^4/3)(A/2 - 1)^3 just above (``histories.energy``).  Right:
+f_fit / f solving kappa^2 W_hs(A/kappa) = W_cyl(A) (``half_space.comparison``).
+"""
+
+import numpy as np
+
+from torsional_contact.curves import monotonic_curves
+from torsional_contact.half_space import closed_form as hs
+from torsional_contact.half_space.comparison import apparent_friction_ratio
+from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+
+
+def main():
+    p = figure_parser(__doc__)
+    p.add_argument("--n-points", type=int, required=True, help="ranges A on the energy curves")
+    p.add_argument("--fit-points", type=int, required=True, help="ranges A of the friction-fit curve")
+    a = p.parse_args()
+    top = 8 / 3
+    ranges = np.geomspace(1e-2, top * (1 - 1e-6), a.n_points)
+    above = 2 + np.geomspace(1e-4, top - 2 - 1e-6, a.n_points)
+    w_hs = hs.dissipation_per_cycle(ranges)
+    w_cyl = monotonic_curves().dissipation(above)
+    use_style(a.style)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 3.0))
+    left.loglog(ranges, w_hs, label="half-spaces")
+    left.loglog(ranges, hs.SMALL_AMPLITUDE_COEFFICIENT * ranges**4, ":", label=r"$(27\pi^4/131072)\,A^4$")
+    left.loglog(above, w_cyl, label=r"cylinders ($W = 0$ for $A \leq 2$)")
+    left.loglog(above, np.pi**4 / 3 * (above / 2 - 1) ** 3, "--", label=r"$(\pi^4/3)(A/2 - 1)^3$")
+    left.set_ylim(1e-10, 1e3)
+    left.set_xlabel(r"torque range $A = \Delta T^*$")
+    left.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
+    left.legend(fontsize=7, loc="upper left")
+    fit = 2 + np.geomspace(1e-3, top - 2 - 1e-9, a.fit_points)
+    kappa = np.array([apparent_friction_ratio(x) for x in fit])
+    right.loglog(fit - 2, kappa)
+    right.axhline(1.0, color="0.5", lw=0.8)
+    right.set_xlabel(r"$A - 2$ (cylinders' range beyond the cyclic-slip threshold)")
+    right.set_ylabel(r"half-space fit $f_\mathrm{fit}/f$")
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()
