@@ -97,6 +97,28 @@ def test_energies_in_joules():
         signal.dissipated_energy - states[1].dissipated_energy, rel=1e-12)
 
 
+
+def test_half_space_model_in_si_units(capsys):
+    """The half-space model through the specimen: the normalised closed forms times the same scales."""
+    s = Specimen(**LAB, gauge_length="20 mm")
+    torque_star = 1.8 / s.torque_scale
+    state = s.solve(torque="1.8 N m", model="half-space")
+    reference = solve(torque=torque_star, model="half-space")
+    assert state.stick_radius == pytest.approx(reference.stick_radius * 0.005, rel=ROUNDING)
+    assert state.rigid_rotation == pytest.approx(reference.rigid_rotation * s.rotation_scale, rel=ROUNDING)
+    with pytest.raises(ValueError, match="twist is defined for model='cylinder' only"):
+        state.twist  # noqa: B018 - a property that must refuse
+    # a half-space slips at any torque: W(A) = 4 W_mono(A/2) of its own closed forms, per cycle
+    states = s.history([0.0, 0.5, -0.5, 0.5], model="half-space")
+    per_cycle = states[3].dissipated_energy - states[1].dissipated_energy
+    assert per_cycle > 0 and s.energy_per_cycle(0.5, model="half-space") == pytest.approx(per_cycle, rel=1e-12)
+    assert s.regime(0.5, model="half-space") == "partial-slip" and s.regime(0.5) == "stick"
+    assert main(["solve", "--torque", "1.8 N m", *SPECIMEN_ARGS, "--gauge-length", "20 mm", "--model", "half-space",
+                 "--json"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert record["model"] == "half-space" and "twist" not in record
+    assert record["rigid_rotation"] == pytest.approx(state.rigid_rotation, rel=ROUNDING)
+
 def _write(path, text):
     path.write_text(text, encoding="utf-8")
     return str(path)

@@ -194,8 +194,11 @@ class Specimen:
         return self.gauge_length / (self.shear_modulus * 0.5 * math.pi * self.radius**4)
 
     # ---------------------------------------------------------------- solutions
-    def solve(self, torque=None, *, stick_radius=None, method=None, n_terms=None, tolerance=None) -> PhysicalState:
+    def solve(self, torque=None, *, stick_radius=None, method=None, n_terms=None, tolerance=None,
+              model=None) -> PhysicalState:
         """The state for a torque (N m) or a stick radius (a length, 0 <= c <= radius): exactly one of the two.
+
+        ``model``: "cylinder" (default) or "half-space" (``models``), as for ``solve``.
 
         Raises ValueError naming the argument: both or neither, a wrong dimension, |T| above
         the gross-slip torque 2 f F a / 3 (the cylinders spin), a stick radius outside [0, a].
@@ -206,16 +209,17 @@ class Specimen:
             raise ValueError("give exactly one of torque (N m) and stick_radius (a length in [0, radius])")
         if torque is not None:
             normalized = solve(torque=self._checked_torque("torque", torque), method=method, n_terms=n_terms,
-                               tolerance=tolerance)
+                               tolerance=tolerance, model=model)
         else:
             c = units.si_value("stick_radius", stick_radius, "length")
             if not math.isfinite(c) or not 0.0 <= c <= self.radius:
                 raise ValueError(f"stick_radius must lie in [0, {self.radius:g}] m (0 to the radius), got "
                                  f"{stick_radius!r}")
-            normalized = solve(stick_radius=c / self.radius, method=method, n_terms=n_terms, tolerance=tolerance)
+            normalized = solve(stick_radius=c / self.radius, method=method, n_terms=n_terms, tolerance=tolerance,
+                               model=model)
         return PhysicalState(self, normalized)
 
-    def history(self, torques, *, method=None, n_terms=None) -> tuple[PhysicalState, ...]:
+    def history(self, torques, *, method=None, n_terms=None, model=None) -> tuple[PhysicalState, ...]:
         """States after each step of a torque history (N m) from the virgin interface (memory rules).
 
         Each state has ``dissipated_energy`` (J) besides the keys of ``solve``.
@@ -223,14 +227,15 @@ class Specimen:
         from .histories import history
 
         values = self._torque_list("torques", torques)
-        return tuple(PhysicalState(self, s) for s in history(values, method=method, n_terms=n_terms))
+        return tuple(PhysicalState(self, s) for s in history(values, method=method, n_terms=n_terms, model=model))
 
-    def signal(self, torques, *, method=None, n_terms=None) -> PhysicalSignal:
+    def signal(self, torques, *, method=None, n_terms=None, model=None) -> PhysicalSignal:
         """A long sampled torque signal (N m): turning points, closed cycles and energies (``histories.signal``)."""
         from .histories import analyse_signal
 
         values = np.asarray(self._torque_list("torques", torques))
-        return PhysicalSignal(self, analyse_signal(values, method=method, n_terms=n_terms, name="torques"), values)
+        return PhysicalSignal(self, analyse_signal(values, method=method, n_terms=n_terms, model=model,
+                                                               name="torques"), values)
 
     def _torque_list(self, name: str, torques) -> list[float]:
         values = units.si_array(name, torques, "torque") / self.torque_scale
@@ -239,32 +244,36 @@ class Specimen:
         return [self._checked_torque(f"{name}[{i}]", float(v) * self.torque_scale) for i, v in enumerate(values)]
 
     # ---------------------------------------------------------------- cyclic loading
-    def regime(self, torque_amplitude) -> str:
+    def regime(self, torque_amplitude, *, model=None) -> str:
         """Slip regime of a torque cycling between -T_a and T_a (after the first loading).
 
-        "stick" (T_a <= f F a / 2: the interface shakes down to full stick), "partial-slip"
-        (cyclic slip of an annulus) or "gross-slip" (T_a >= 2 f F a / 3: the cylinders spin).
+        Cylinders (default): "stick" (T_a <= f F a / 2: the interface shakes down to full
+        stick), "partial-slip" (cyclic slip of an annulus) or "gross-slip" (T_a >= 2 f F a / 3:
+        the cylinders spin).  ``model="half-space"``: an annulus slips at any T_a > 0.
         """
+        from .models import CYLINDER, validated
+
+        model = validated(model)
         t = abs(self.normalized_torque(torque_amplitude, "torque_amplitude"))
         if not math.isfinite(t):
             raise ValueError(f"torque_amplitude must be a finite torque (N m), got {torque_amplitude!r}")
-        return "stick" if t <= SLIP_ONSET_TORQUE else "gross-slip" if t >= GROSS_SLIP_TORQUE else "partial-slip"
+        onset = SLIP_ONSET_TORQUE if model == CYLINDER else 0.0
+        return "stick" if t <= onset else "gross-slip" if t >= GROSS_SLIP_TORQUE else "partial-slip"
 
-    def energy_per_cycle(self, torque_amplitude, *, method=None, n_terms=None) -> float:
+    def energy_per_cycle(self, torque_amplitude, *, method=None, n_terms=None, model=None) -> float:
         """Energy (J) dissipated per cycle of a torque between -T_a and T_a: W(2 T*_a) (f p0)^2 a^3 / mu.
 
         Zero for T_a at or below the slip onset; W(A) = 4 W_mono(A/2) (``histories.memory``,
         rule 5).  Raises ValueError at or beyond the gross-slip torque (infinite: the
         cylinders spin).
         """
-        from .histories.monotonic import points, resolve
+        from .models import monotonic_model
 
         t = self._checked_torque("torque_amplitude", torque_amplitude)
         if abs(t) >= GROSS_SLIP_TORQUE:
             raise ValueError(f"torque_amplitude must be below the gross-slip torque {self.gross_slip_torque:.6g} N m "
                              f"for a finite energy per cycle, got {torque_amplitude!r}")
-        method, n_terms = resolve(method, n_terms)
-        return float(4.0 * points(abs(t), method, n_terms)[2]) * self.energy_scale
+        return float(4.0 * monotonic_model(model, method, n_terms).point(abs(t))[2]) * self.energy_scale
 
 
 def _scaled(value, factor):
@@ -300,7 +309,11 @@ class PhysicalState:
 
     @property
     def twist(self) -> float:
-        """Twist over the gauge length (rad); ValueError without one."""
+        """Twist over the gauge length (rad) of the cylinders; ValueError without a gauge length, and for the
+        half-space model (a half-space has no cross-sections: its ``rigid_rotation`` is the far-field rotation)."""
+        if getattr(self.normalized, "model", "cylinder") != "cylinder":
+            raise ValueError("twist is defined for model='cylinder' only (two half-spaces have no cross-sections at a "
+                             "gauge length; use rigid_rotation, the far-field rotation of each body)")
         return float(self.specimen.twist(self.normalized.torque, self.normalized.rigid_rotation))
 
     @property
@@ -400,7 +413,8 @@ def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False):
     if in_cycles and "dissipated_energy" in out and "energy" not in out:
         out["energy"] = out["dissipated_energy"]
         seen.add("energy")
-    if specimen.gauge_length is not None and "torque" in value and "rigid_rotation" in value and "twist" not in out:
+    if specimen.gauge_length is not None and "torque" in value and "rigid_rotation" in value and "twist" not in out \
+            and value.get("model", "cylinder") == "cylinder":  # a half-space has no cross-sections
         torque, omega = value["torque"], value["rigid_rotation"]
         if isinstance(torque, (int, float)) and isinstance(omega, (int, float)) and not isinstance(torque, bool):
             out["twist"] = float(specimen.twist(torque, omega))

@@ -92,10 +92,12 @@ def specimen_from(args):
 def solve_si(args, specimen) -> dict:
     """``solve`` with the specimen options: the state in SI units (``--radii`` in m)."""
     if args.stick_radius is not None:
-        state = specimen.solve(stick_radius=args.stick_radius, method=args.method, n_terms=args.n_terms)
+        state = specimen.solve(stick_radius=args.stick_radius, method=args.method, n_terms=args.n_terms,
+                               model=args.model)
     else:
-        state = specimen.solve(torque=_torque_text("--torque", args.torque), method=args.method, n_terms=args.n_terms)
-    record = state.normalized.as_dict()
+        state = specimen.solve(torque=_torque_text("--torque", args.torque), method=args.method, n_terms=args.n_terms,
+                               model=args.model)
+    record = {**state.normalized.as_dict(), "model": args.model}
     if args.radii is not None:
         radii = np.array([_length("--radii", r) for r in args.radii]) / specimen.radius
         if np.any(radii < 0) or np.any(radii > 1):
@@ -128,8 +130,8 @@ def history_si(args, specimen):
         if args.radii is not None:
             raise ValueError("--radii is not available with the specimen options for history (use solve)")
         torques = [_torque_text(f"--turning-points[{i}]", v) for i, v in enumerate(args.turning_points)]
-        return [physical_record(state.normalized.as_dict(), specimen) for state in
-                specimen.history(torques, method=args.method, n_terms=args.n_terms)]
+        return [physical_record({**state.normalized.as_dict(), "model": args.model}, specimen) for state in
+                specimen.history(torques, method=args.method, n_terms=args.n_terms, model=args.model)]
     for option, value in (("--output", args.output), ("--states", args.states), ("--column", args.column)):
         if value is not None:
             raise ValueError(f"{option} is not available with the specimen options (the tables are normalised; "
@@ -150,8 +152,8 @@ def history_si(args, specimen):
     gate = 0.0 if args.gate is None else _torque_text("--gate", args.gate) / specimen.torque_scale
     bin_width = None if args.bin_width is None else _torque_text("--bin-width", args.bin_width) / specimen.torque_scale
     result = analyse_values(np.clip(torque_star, -4.0 / 3.0, 4.0 / 3.0), source=args.signal, method=args.method,
-                            n_terms=args.n_terms, gate=gate, bin_width=bin_width, progress=not args.no_progress,
-                            full=args.json)
+                            n_terms=args.n_terms, model=args.model, gate=gate, bin_width=bin_width,
+                            progress=not args.no_progress, full=args.json)
     record = physical_record(result, specimen)
     record["columns"] = {"torque": columns["units"]["torque"], **({"time": columns["units"]["time"]}
                                                                   if "time" in columns["units"] else {})}
