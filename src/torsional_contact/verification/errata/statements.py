@@ -92,7 +92,8 @@ def check_completeness():
             "(method 'complete').  The incompleteness, and the conclusion that the printed scheme cannot converge to "
             "the solution, do not depend on how T* is fixed (row Sec.3-closure); the numbers do." + CLOSURE_TAG,
             r"The eigenfunctions $J_1(\lambda_{2,n}r)$ of (21) are all orthogonal to $r$ with weight $r$, so the "
-            r"series lacks the rigid rotation $\omega r$ and is incomplete. The published system then slips "
+            r"series lacks the rigid rotation $\omega r$ and is incomplete. The reconstructed printed scheme then "
+            r"slips "
             rf"backwards on the stick disc ($u_\theta = \alpha r$, $\alpha = {fixed(alpha, 3)}$), gives "
             rf"$T^* = {fixed(t03, 2)}$, ${fixed(t01, 2)}$ and ${fixed(t001, 2)}$ (above $4/3$) at $b = 0.3$, $0.1$ "
             rf"and $0.01$, and its $T^*$ stays up to ${fixed(pub_err, 2)}$ (relative) from the truth at "
@@ -246,8 +247,8 @@ def check_limits():
             f"T*(0.05) = {near_spin:.6f}.  The published formulation gives T*(0.05) = {pub_spin:.3f} > 4/3 "
             f"(N = {N_PAPER})." + CLOSURE_TAG,
             rf"Slip starts at $T^* = 1$ and spinning occurs at $T^* = 4/3$; the truth approaches both "
-            rf"($T^*(0.98) = {fixed(near_onset, 4)}$, $T^*(0.05) = {fixed(near_spin, 5)}$), whereas the published "
-            rf"system gives $T^*(0.05) = {fixed(pub_spin, 2)}$." + CLOSURE_TAG_LATEX,
+            rf"($T^*(0.98) = {fixed(near_onset, 4)}$, $T^*(0.05) = {fixed(near_spin, 5)}$), whereas the "
+            rf"reconstructed printed scheme gives $T^*(0.05) = {fixed(pub_spin, 2)}$." + CLOSURE_TAG_LATEX,
             kind="statement",
             depends_on_closure=True,
             torque_near_onset=near_onset,

@@ -215,7 +215,8 @@ def check_weighting():
             "torque of the traction present, the printed scheme loses the weighting dependence but converges to a "
             "wrong T* (row Sec.3-closure)." + CLOSURE_TAG,
             rf"Weighting the stick residual by $\kappa = 0.5$, $1$, $2$ (an arbitrary choice of length unit) moves "
-            rf"the published $T^*(0.6)$ from ${fixed(published[0], 4)}$ to ${fixed(published[2], 4)}$ even at "
+            rf"the reconstructed printed scheme's $T^*(0.6)$ from ${fixed(published[0], 4)}$ to "
+            rf"${fixed(published[2], 4)}$ even at "
             rf"$N = {N_CONVERGED}$, while the complete form stays within "
             rf"${sci(error[f'complete_{N_CONVERGED}'])}$ (relative) of the truth "
             rf"${fixed(truth, 4)}$. This judges the scheme (21)+(38), not the algebra of (38)." + CLOSURE_TAG_LATEX,
