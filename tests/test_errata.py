@@ -67,7 +67,6 @@ EXPECTED = {
     "33-38": "correct",
     "34": "correct",
     "35": "correct",
-    "38-weighting": "incorrect",
     "A.39": "correct",
     "A.40": "correct",
     "A.41": "correct",
@@ -88,6 +87,8 @@ EXPECTED = {
     "Sec.4-limits": "correct",
     "Sec.4-N145": "numerically-hazardous",
     "Sec.3-torque": "incorrect",
+    "Sec.3-closure": "incorrect",  # no closure makes the printed scheme converge to the solution
+    "Sec.3-weighting": "incorrect",  # the scheme (21) + (38), not the algebra of (38)
     "completeness": "incorrect",
     "Fig.5": "correct",
     "Fig.5-reverse": "correct",
@@ -95,7 +96,7 @@ EXPECTED = {
 }
 
 #: Rows whose verdict or numbers use this project's closure (T* from traction continuity at r = b).
-CLOSURE_ROWS = {"33-38", "38-weighting", "Sec.4-limits", "Sec.4-N145", "completeness", "Fig.5"}
+CLOSURE_ROWS = {"33-38", "Sec.3-weighting", "Sec.4-limits", "Sec.4-N145", "completeness", "Fig.5"}
 
 #: Names of the thresholds a check may cite (settings), or the half-unit rule of quoted numbers.
 THRESHOLDS = ("TOL_FORMULA", "TOL_DOUBLE", "HAZARD_DIGITS_KEPT", "NEGLIGIBLE_CHANGE", "QUOTED_TORQUE_HALF_UNIT",
@@ -170,9 +171,35 @@ def test_paper_equations_of_labels():
     assert errata.paper_equations("33-38") == (33, 34, 35, 36, 37, 38)
     assert errata.paper_equations("A.40") == (40,)
     assert errata.paper_equations("51-series") == (51,)
-    assert errata.paper_equations("38-weighting") == (38,)
+    assert errata.paper_equations("Sec.3-weighting") == ()
     assert errata.paper_equations("Sec.4-N145") == ()
     assert errata.paper_equations("Fig.5") == ()
+
+
+def test_verdicts_do_not_contradict_each_other(table):
+    """A statement about the scheme or the text is not filed under an equation number (so '(33)-(38) correct'
+    and 'the scheme (21) + (38) depends on the weighting' are two different claims), and no 'incorrect' row
+    shows a discrepancy at the rounding level in its discrepancy column (a numerically hazardous formula is
+    exact, so its discrepancy is small by definition)."""
+    for row in table:
+        if row["details"]["kind"] == "statement":
+            assert errata.paper_equations(row["equation"]) == (), row["equation"]
+        if row["verdict"] == "incorrect" and row["max_rel_discrepancy"] is not None:
+            assert row["max_rel_discrepancy"] > errata.TOL_DOUBLE, row["equation"]
+
+
+def test_closure_survey_findings(table):
+    """Reviewed outcome of the closures row: which pathologies of the printed scheme depend on the closure."""
+    rows = {r["equation"]: r for r in table}
+    flags = rows["Sec.3-closure"]["details"]["pathologies"]
+    assert flags["traction"] == dict.fromkeys(flags["traction"], True)
+    assert flags["torque"] == {"above_spinning": False, "negative_alpha": False, "backward_slip_near_b": True,
+                               "above_friction_limit": False, "weighting_dependent": False, "not_converging": True}
+    assert flags["displacement"]["above_spinning"] is False and flags["displacement"]["not_converging"] is True
+    survey = rows["Sec.3-closure"]["details"]["survey"]
+    for closure, s in survey.items():  # the complete form converges whatever the closure
+        assert s["error_complete"]["1000"] < s["error_complete"]["145"], closure
+    assert not rows["Sec.3-closure"]["details"]["depends_on_closure"]
 
 
 def _outside_math(text):

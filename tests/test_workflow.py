@@ -141,8 +141,8 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
     for rel in ("figures/fig5_cyclic.png", "errata/errata.md", "data/torque_curve.csv"):
         (built / rel).unlink()
     rules = planned_rules(snakemake("-n"))
-    assert rules == {"fig5_cyclic", "errata", "torque_curve", "fig3_torque_curve", "errata_tables", "paper",
-                     "notebook", "report", "all"}, rules
+    assert rules == {"fig5_cyclic", "errata", "torque_curve", "fig3_torque_curve", "errata_tables", "paper_tables",
+                     "paper", "supplement", "notebook", "report", "all"}, rules
     snakemake()
     assert all((built / rel).exists() for rel in ("figures/fig5_cyclic.png", "errata/errata.md",
                                                   "data/torque_curve.csv"))
@@ -152,9 +152,10 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
 @pytest.mark.parametrize(
     "module, expected",
     [
-        # a verification module: only verification rules, their tables, the manuscript, notebook and report
+        # a verification module: only verification rules, their tables, the manuscript, its supplement,
+        # notebook and report
         ("src/torsional_contact/verification/errata/appendix_a.py",
-         {"errata", "errata_tables", "paper", "notebook", "report", "all"}),
+         {"errata", "errata_tables", "paper_tables", "paper", "supplement", "notebook", "report", "all"}),
         # the figure helpers: every figure, the manuscript and the report (no data or verification rule)
         ("src/torsional_contact/io/plotting.py",
          {"fig_schematic", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig_published_vs_complete",
@@ -162,7 +163,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
           "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit",
           "fig_half_space_curves", "fig_half_space_energy",
-              "paper", "report", "all"}),
+              "paper", "supplement", "report", "all"}),
     ],
 )
 def test_editing_a_module_reruns_exactly_the_rules_that_import_it(built, module, expected):
@@ -184,7 +185,8 @@ def test_changing_the_style_reruns_only_figures_and_what_shows_them(built):
         rules = planned_rules(snakemake("-n"))
     finally:
         style.write_bytes(original)
-    assert "paper" in rules and all(r.startswith("fig") or r in ("paper", "report", "all") for r in rules), rules
+    assert "paper" in rules and all(r.startswith("fig") or r in ("paper", "supplement", "report", "all")
+                                    for r in rules), rules
 
 
 @pytest.mark.parametrize(

@@ -1,18 +1,45 @@
-# The manuscript: paper/ms.tex with generated figures, tables and macros, compiled by latexmk.
-# Its inputs are read off the LaTeX source itself: every \resultsdir/... path and every
-# \loadresults{name} (results/macros/name.tex), so nothing is listed twice by hand.
+# The manuscript and its supplement: paper/ms.tex and paper/supplement.tex with generated figures,
+# tables and macros, compiled by latexmk.  Their inputs are read off the LaTeX sources themselves:
+# every \resultsdir/... path and every \loadresults{name} (results/macros/name.tex), in the main
+# file and in every paper/sections/*.tex it \input's, so nothing is listed twice by hand and a
+# section added with one \input{sections/NAME} brings its figures and macros into the rule.
 import re
 
 MANUSCRIPT = "paper/ms.tex"
+SUPPLEMENT = "paper/supplement.tex"
+SUPPLEMENT_PDF = f"{OUT}/paper/supplement.pdf"
+
+
+def _uncommented(path):
+    """The LaTeX source without its comments (an escaped \\% is kept)."""
+    lines = Path(path).read_text().splitlines()
+    return "\n".join(re.split(r"(?<!\\)%", line, maxsplit=1)[0] for line in lines)
+
+
+def tex_sources(main):
+    """``main`` and the paper/sections/*.tex files it \\input's (recursively), in order of first appearance."""
+    found, queue = [], [main]
+    while queue:
+        path = queue.pop(0)
+        if path in found:
+            continue
+        found.append(path)
+        for name in re.findall(r"\\input\{(sections/[\w./-]+?)(?:\.tex)?\}", _uncommented(path)):
+            queue.append(f"paper/{name}.tex")
+    return found
+
+
+def latex_inputs(main):
+    """Generated files a LaTeX document reads (parsed from ``main`` and its sections)."""
+    text = "\n".join(_uncommented(path) for path in tex_sources(main))
+    paths = {f"{OUT}/{p}" for p in re.findall(r"\\resultsdir/([\w/.-]+\.\w+)", text)}
+    paths |= {f"{OUT}/macros/{name}.tex" for name in re.findall(r"\\loadresults\{([\w.-]+)\}", text)}
+    return sorted(paths)
 
 
 def manuscript_inputs():
-    """Generated files the manuscript reads (parsed from paper/ms.tex)."""
-    text = Path(MANUSCRIPT).read_text()
-    text = "\n".join(line.split("%", 1)[0] for line in text.splitlines())  # drop comments
-    paths = {f"{OUT}/{p}" for p in re.findall(r"\\resultsdir/([\w/-]+\.\w+)", text)}
-    paths |= {f"{OUT}/macros/{name}.tex" for name in re.findall(r"\\loadresults\{([\w.-]+)\}", text)}
-    return sorted(paths)
+    """Generated files the manuscript reads (parsed from paper/ms.tex and its sections)."""
+    return latex_inputs(MANUSCRIPT)
 
 
 rule build_macros:
@@ -35,9 +62,37 @@ rule build_macros:
         " --output {output} > {log} 2>&1"
 
 
+rule paper_tables:
+    input:
+        script="workflow/scripts/paper_tables.py",
+        lib=lib("workflow/scripts/paper_tables.py"),
+        errata=f"{OUT}/errata/errata.json",
+        fem=f"{OUT}/verification/fem_validation.json",
+    output:
+        findings=f"{OUT}/tables/errata_findings.tex",
+        closures=f"{OUT}/tables/closures.tex",
+        macros=f"{OUT}/macros/paper_tables.tex",
+    log:
+        logfile("paper_tables"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --errata {input.errata} --fem {input.fem} --findings {output.findings}"
+        " --closures {output.closures}"
+        " --macros {output.macros} > {log} 2>&1"
+
+
+# -cd: latexmk runs in paper/ so references.bib and sections/ are found; \resultsdir is relative to paper/
+LATEXMK = ("mkdir -p {params.build} && latexmk -cd -pdf -interaction=nonstopmode -halt-on-error"
+           " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{{params.results}}}'"
+           " {input.tex} > {log} 2>&1")
+
+
 rule paper:
     input:
         tex=MANUSCRIPT,
+        sections=tex_sources(MANUSCRIPT)[1:],
         bib="paper/references.bib",
         results=manuscript_inputs(),
     output:
@@ -51,11 +106,27 @@ rule paper:
         runtime=10,
         mem_mb=1000,
     shell:
-        # -cd: run in paper/ so references.bib is found; \resultsdir is relative to paper/
-        "mkdir -p {params.build} && latexmk -cd -pdf -interaction=nonstopmode -halt-on-error"
-        " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{{params.results}}}'"
-        " {input.tex} > {log} 2>&1"
-        " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
+        LATEXMK + " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
+
+
+rule supplement:
+    input:
+        tex=SUPPLEMENT,
+        sections=tex_sources(SUPPLEMENT)[1:],
+        bib="paper/references.bib",
+        results=latex_inputs(SUPPLEMENT),
+    output:
+        SUPPLEMENT_PDF,
+    params:
+        build=f"{OUT}/paper/build-supplement",
+        results=os.path.relpath(OUT, "paper"),
+    log:
+        logfile("supplement"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        LATEXMK + " && cp {params.build}/supplement.pdf {output}.tmp && mv {output}.tmp {output}"
 
 
 
@@ -91,5 +162,7 @@ rule report:
 localrules:
     all,
     build_macros,
+    paper_tables,
     paper,
+    supplement,
     report,

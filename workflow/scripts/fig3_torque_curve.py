@@ -1,11 +1,26 @@
-"""Fig. 3: stick radius b/a against T* = 2T/(f F a): converged (Abel-Fredholm) and the weak forms at
-the paper's N (reads the CSV of workflow/scripts/torque_curve.py)."""
+"""Fig. 3: stick radius b/a against T* = 2T/(f F a): converged (Abel-Fredholm), the complete weak form
+and the reconstructed printed scheme under two closures at the paper's N (reads the CSV of
+workflow/scripts/torque_curve.py).
+
+Each weak-form column of the CSV is defined on its own grid (nan elsewhere), so each curve is
+drawn through its finite rows only.  Where a curve leaves the plotted T* range it is cut at the
+frame and the exit is marked with an arrow head.
+"""
 
 import io
 
 import numpy as np
 
 from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+
+#: Plotted T* range: slip onset to a little beyond spinning.
+T_RANGE = (0.98, 1.5)
+
+
+def finite_rows(data, column):
+    """(T*, b) of the rows where ``column`` is finite, in order of b."""
+    keep = np.isfinite(data[column])
+    return data[column][keep], data["stick_radius"][keep]
 
 
 def main():
@@ -17,19 +32,40 @@ def main():
         rows = "".join(line for line in handle if not line.startswith("#"))
     data = np.genfromtxt(io.StringIO(rows), delimiter=",", names=True)
     use_style(a.style)
-    fig, ax = plt.subplots()
-    ax.plot(data["torque_fast"], data["stick_radius"], "k-", lw=2.2, label="converged (Abel-Fredholm)")
-    ax.plot(data["torque_complete"], data["stick_radius"], "--", label=f"complete weak form, N = {a.n_terms}")
-    ax.plot(data["torque_published"], data["stick_radius"], ":", label=f"published eq. (38), N = {a.n_terms}")
+    fig, ax = plt.subplots(figsize=(4.4, 3.6))
+    ax.axvspan(4 / 3, T_RANGE[1], color="0.92", lw=0)
+    ax.text(0.5 * (4 / 3 + T_RANGE[1]), 0.97, "above spinning:\nimpossible", ha="center", va="top", fontsize=7.5,
+            color="0.35")
+    curves = (
+        ("torque_fast", dict(color="k", lw=2.4, label="converged (Abel–Fredholm)")),
+        ("torque_complete", dict(color="C0", lw=1.2, ls=(0, (5, 2)), label=f"complete weak form, $N = {a.n_terms}$")),
+        ("torque_published", dict(color="C1", lw=1.3, label="reconstructed printed scheme,\nclosure $q(b) = 1$")),
+        ("torque_published_torque_closure",
+         dict(color="C2", lw=1.3, ls=(0, (1, 1.2)), label="reconstructed printed scheme,\ntorque closure")),
+    )
+    for column, style in curves:
+        if column not in data.dtype.names:
+            continue
+        torque, b = finite_rows(data, column)
+        off = torque > T_RANGE[1]
+        ax.plot(np.where(off, np.nan, torque), b, **style)
+        if off.any():  # the curve leaves the frame: mark where, with the largest T* it reaches
+            exit_b = b[off].max()
+            ax.plot([T_RANGE[1]], [exit_b], marker=">", color=style["color"], ms=6, clip_on=False)
+            ax.annotate(f"$T^*$ up to {torque.max():.2f}\nbelow $b/a = {exit_b:.2f}$", (T_RANGE[1], exit_b),
+                        xytext=(-4, -10), textcoords="offset points", ha="right", va="top", fontsize=7.5,
+                        color=style["color"])
     ax.axvline(1.0, color="0.5", lw=0.8)
     ax.axvline(4 / 3, color="0.5", lw=0.8)
-    ax.text(1.0, 1.02, " slip onset", transform=ax.get_xaxis_transform(), fontsize=8)
-    ax.text(4 / 3, 1.02, " spinning", transform=ax.get_xaxis_transform(), fontsize=8)
-    ax.set_xlim(0.98, 1.5)
+    ax.text(1.0, 1.01, "slip onset", transform=ax.get_xaxis_transform(), ha="left", va="bottom")
+    ax.text(4 / 3, 1.01, "spinning", transform=ax.get_xaxis_transform(), ha="center", va="bottom")
+    ax.set_xlim(*T_RANGE)
     ax.set_ylim(0, 1.0)
     ax.set_xlabel(r"$T^* = 2T/(fFa)$")
     ax.set_ylabel(r"stick radius $b/a$")
-    ax.legend(loc="lower left")
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=7.5, handlelength=2.6,
+               frameon=False)
+    fig.tight_layout(rect=(0, 0.17, 1, 1))  # the legend below the axes, off the curves
     save_figure(fig, a.pdf, a.png)
 
 

@@ -22,7 +22,7 @@ def main():
 
     r = np.linspace(0.0, 1.0, a.n_points)
     use_style(a.style)
-    fig, ax = plt.subplots()
+    fig, ax = plt.subplots(figsize=(3.1, 2.45))  # printed at half the text width: fonts at nominal size
     for b in a.stick_radii:
         s = solve(stick_radius=b, method=a.method, n_terms=a.n_terms)
         if a.quantity == "traction":
@@ -37,7 +37,8 @@ def main():
     ax.set_xlabel(r"$r/a$")
     ax.set_ylabel(LABELS[a.quantity])
     ax.set_xlim(0, 1)
-    ax.legend(title=method_label(s))
+    if a.quantity == "traction":  # the panels of the figure share one legend: it is drawn in this one
+        ax.legend(title=method_label(s), fontsize=7.5, title_fontsize=7.5)
     save_figure(fig, a.pdf, a.png)
 
 

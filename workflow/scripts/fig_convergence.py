@@ -1,5 +1,5 @@
 """Convergence: error of T* (against the converged fast solution) against the resolution,
-with the observed orders of the weak forms (N sweep) and the exponential decay of the
+with the weak forms (N sweep, beside the theoretical rate 1/N) and the exponential decay of the
 Abel-Fredholm method (node sweep); reads the benchmark JSON."""
 
 
@@ -14,10 +14,10 @@ def floored(ax, x, err, marker, color, label=None):
     """Plot errors; those at the rounding level at FLOOR with open markers (never silently clipped)."""
     err = np.asarray(err, dtype=float)
     shown = np.maximum(err, FLOOR)
-    line = ax.plot(x, shown, marker, color=color, label=label)[0]
+    line = ax.plot(x, shown, marker, color=color, label=label, ms=4)[0]
     low = err <= FLOOR
     if low.any():
-        ax.plot(np.asarray(x)[low], shown[low], marker[0], color=color, mfc="white", ms=7, zorder=5)
+        ax.plot(np.asarray(x)[low], shown[low], marker[0], color=color, mfc="white", ms=5, zorder=5)
     return line
 
 
@@ -26,7 +26,7 @@ def main():
     a = p.parse_args()
     results = load_data(a.data)["results"]
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.2))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(6.3, 3.9))  # printed at the text width
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for result, color in zip(results, colors, strict=False):
         b = result["stick_radius"]
@@ -34,11 +34,11 @@ def main():
             rows = [r for r in result["rows"] if r["method"] == method]
             n = np.array([r["resolution"] for r in rows], dtype=float)
             err = np.array([r["torque_error"] for r in rows])
-            label = f"{method}, $b/a={b:g}$"
-            if method == "complete" and n.size >= 2:
-                order = -np.polyfit(np.log(n), np.log(np.maximum(err, FLOOR)), 1)[0]
-                label += f" (order {order:.2f})"
-            floored(left, n, err, marker, color, label)
+            name = "reconstructed printed scheme" if method == "published" else "complete weak form"
+            floored(left, n, err, marker, color, f"{name}, $b/a={b:g}$")
+            if method == "complete" and b == results[len(results) // 2]["stick_radius"] and n.size:
+                # the theoretical rate 1/N through the first point (not a fit)
+                left.plot(n, err[0] * n[0] / n, "-", color="0.55", lw=0.8, label=r"$\propto 1/N$ (theory)")
         rows = [r for r in result["rows"] if r["method"] == "fast"]
         floored(right, [r["resolution"] for r in rows], [r["torque_error"] for r in rows], "D-", color,
                 f"$b/a = {b:g}$")
@@ -51,10 +51,12 @@ def main():
     left.minorticks_off()
     left.set_xlabel("number of terms N")
     left.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
-    left.legend(fontsize=6)
+    left.legend(fontsize=7.5, title="weak forms", title_fontsize=7.5, ncol=1, loc="upper center",
+                bbox_to_anchor=(0.5, -0.2), frameon=False)
     right.set_xlabel("Abel-Fredholm: Nystr\u00f6m nodes")
     right.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
-    right.legend(fontsize=7, title="Abel-Fredholm")
+    right.legend(fontsize=7.5, title="Abel–Fredholm", title_fontsize=7.5, loc="upper center",
+                 bbox_to_anchor=(0.5, -0.2), frameon=False)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

@@ -13,8 +13,8 @@ def main():
     a = p.parse_args()
     data = load_data(a.data)
     use_style(a.style)
-    # three panels at the width of the text column: large enough fonts once scaled to 16 cm
-    fig, (loops, law, compliance) = plt.subplots(1, 3, figsize=(7.2, 2.9))
+    # three panels at the width of the text column (16 cm): the fonts print at their nominal size
+    fig, (loops, law, compliance) = plt.subplots(1, 3, figsize=(6.3, 2.9))
     for loop in data["loops"]:
         loops.plot(loop["rigid_rotation"], loop["torque"], label=f"$[{loop['t_min']:g}, {loop['t_max']:g}]$")
     loops.set_xlabel(r"rigid rotation $\omega\mu/f p_0$")
@@ -25,16 +25,16 @@ def main():
     law.loglog(d["eps"], d["asymptote"], "-", label=r"$(\pi^4/3)\,\epsilon^3$")
     law.set_xlabel(r"$\epsilon = \Delta T^*/2 - 1$")
     law.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
-    law.legend(title=f"fitted exponent {d['fitted_exponent']:.2f}", fontsize=7, title_fontsize=7)
+    law.legend(title=f"fitted exponent {d['fitted_exponent']:.2f}", fontsize=7.5, title_fontsize=7.5)
     c = data["compliance"]
     compliance.semilogy(c["torque"], c["d_omega_d_torque"], "o-", label="first loading")
     compliance.semilogy(c["torque"], c["asymptote"], "--", label=r"$(\pi^3/4)(T^*-1)^2$")
     compliance.set_xlabel(r"$T^*$")
     compliance.set_ylabel(r"$d\omega/dT^*$")
-    compliance.legend(fontsize=7)
+    compliance.legend(fontsize=7.5)
     fig.legend(handles, labels, title=r"loops $[T^*_{\min}, T^*_{\max}]$", loc="lower center",
-               ncol=min(len(labels), 6), fontsize=7, title_fontsize=7, frameon=False)
-    fig.tight_layout(rect=(0, 0.14, 1, 1))  # the legend of the loops below the panels, off the data
+               ncol=min(len(labels), 6), fontsize=7.5, title_fontsize=7.5, frameon=False)
+    fig.tight_layout(rect=(0, 0.16, 1, 1))  # the legend of the loops below the panels, off the data
     save_figure(fig, a.pdf, a.png)
 
 

@@ -25,7 +25,7 @@ def main():
     rows = data["double_fast"]
     b = [r["stick_radius"] for r in rows]
     use_style(a.style)
-    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(10.0, 3.9))
+    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(6.3, 3.7))  # printed at the text width
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     plot_errors(left, b, [r["torque_error"] for r in rows], "o-", r"$|\Delta T^*|$", colors[0])
     plot_errors(left, b, [r["rigid_rotation_error"] for r in rows], "s--", r"$|\Delta\omega|\,\mu/fp_0$", colors[1])
@@ -33,11 +33,11 @@ def main():
     plot_errors(middle, b, [r["slip_error"] for r in rows], "s--", r"max$_r\,|\Delta s|\,\mu/(fp_0a)$", colors[3])
     for ax in (left, middle):
         ax.set_xlabel("stick radius $b/a$")
-        ax.set_ylabel("absolute error, double precision")
+        ax.set_ylabel("absolute difference")
         ax.axhline(2.2e-16, color="0.5", lw=0.6, ls=":", label="double-precision eps")
-        ax.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
-    left.set_title(f"(a) vs. {data['digits']}-digit truth", fontsize=8)
-    middle.set_title(f"(b) interface profiles, max over {rows[0]['n_radii']} radii", fontsize=8)
+        ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=1, frameon=False)
+    left.set_title(f"(a) $T^*$, $\\omega$ vs {data['digits']} digits", fontsize=8)
+    middle.set_title(f"(b) interface, {rows[0]['n_radii']} points", fontsize=8)
     conv = data["convergence"]
     styles = dict(zip(sorted({r["working_digits"] for r in conv}), ("-", "--", ":", "-."), strict=False))
     for k, radius in enumerate(sorted({r["stick_radius"] for r in conv})):
@@ -51,11 +51,11 @@ def main():
             if zeros:
                 right.semilogy(zeros, [CONVERGENCE_FLOOR] * len(zeros), "o", color=colors[k], mfc="none", ms=5)
     right.set_xlabel("Nystrom nodes $n$")
-    right.set_ylabel(r"$|T^*_n - T^*|$ (arbitrary precision)")
-    right.set_title("(c) convergence of the truth in $n$", fontsize=8)
+    right.set_ylabel(r"$|T^*_n - T^*_{\rm ref}|$")
+    right.set_title("(c) nodes, arbitrary precision", fontsize=8)
     if conv:  # line style = working precision: long handles so that it shows
-        right.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False,
-                     handlelength=3.5)
+        right.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=1, frameon=False,
+                     handlelength=3.0)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

@@ -30,7 +30,7 @@ def side_view(ax):
     ax.text(0.06, 0.62, "$z$", fontsize=9)
     ax.annotate("", xy=(1.0, -1.75), xytext=(0.0, -1.75), arrowprops={"arrowstyle": "<->", "lw": 0.8})
     ax.text(0.45, -1.95, "$a$", fontsize=9)
-    ax.text(-0.95, -0.25, "interface $z = 0$", fontsize=7)
+    ax.text(-0.95, -0.25, "interface $z = 0$", fontsize=8)
     ax.set_xlim(-1.4, 1.4)
     ax.set_ylim(-2.4, 2.4)
     ax.set_aspect("equal")

@@ -21,7 +21,7 @@ def main():
     normal_force = np.pi * sigma  # with a = k = 1
     tau_yield = 2 * von_mises_torque_limit(normal_force, 1.0, 1.0) / np.pi  # 2T/(pi a^3 k)
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(6.2, 3.4))
+    fig, ax = plt.subplots(figsize=(5.6, 3.0))  # printed at 0.9 of the text width
     ax.plot(sigma, tau_yield, "k", lw=1.8, label="von Mises onset, eq. (6)")
     for f, color in zip(a.friction, plt.rcParams["axes.prop_cycle"].by_key()["color"], strict=False):
         ax.plot(sigma, f * sigma, color=color, label=f"slip onset $T^*=1$, $f = {f:g}$")
@@ -30,7 +30,7 @@ def main():
     ax.set_ylim(0, 1.1)
     ax.set_xlabel(r"$F/(\pi a^2 k)$")
     ax.set_ylabel(r"$2T/(\pi a^3 k)$")
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     save_figure(fig, a.pdf, a.png)
 
 

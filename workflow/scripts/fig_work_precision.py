@@ -4,7 +4,7 @@ interface traction (units f p0), for each method; reads the benchmark JSON."""
 
 from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
 
-STYLE = {"published": ("s:", "published eq. (38), N sweep"), "complete": ("o-", "complete, N sweep"),
+STYLE = {"published": ("s:", "reconstructed printed scheme, N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm, node sweep"),
          "reference": ("^--", "mpmath/flint, N = 145, digits sweep")}
 FLOOR = 1e-16  # errors at the rounding level (exact zeros included) are drawn here, with open markers
@@ -17,7 +17,7 @@ def main():
     results = data["results"]
     mid = results[len(results) // 2]
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.4))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(6.3, 3.4))  # printed at the text width
     for method, (marker, label) in STYLE.items():
         rows = [r for r in mid["rows"] if r["method"] == method]
         if not rows:
@@ -36,8 +36,9 @@ def main():
         ax.set_ylabel("wall time per stick radius [ms]")
         ax.invert_xaxis()
     left.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
-    left.legend(fontsize=7, title=f"$b/a = {mid['stick_radius']:g}$", loc="center right")
-    fig.tight_layout()
+    fig.legend(*left.get_legend_handles_labels(), fontsize=7.5, title=f"$b/a = {mid['stick_radius']:g}$",
+               title_fontsize=7.5, loc="lower center", ncol=3, frameon=False)
+    fig.tight_layout(rect=(0, 0.2, 1, 1))  # one legend for both panels, below them
     save_figure(fig, a.pdf, a.png)
 
 

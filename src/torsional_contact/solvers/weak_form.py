@@ -70,6 +70,26 @@ in closed form.  When K != 0 the truncated traction at b grows like sqrt(N), so
 'evaluates the torque actually present'; that torque is T* identically, because every
 eigenfunction carries zero torque, so it cannot by itself fix b.
 
+Other closures (``closure=``), for asking which findings about the printed scheme depend
+on (v).  Each is a reading of the paper's 'impose the stick and slip conditions
+immediately either side this point ... and finally evaluate the imposed torque actually
+present', each is linear in T*, and each holds for the exact solution:
+
+* ``"traction"`` (default): (v), the slip condition q = 1 imposed at r = b+;
+* ``"displacement"``: the stick condition imposed at r = b-,
+
+      u(b) = omega b + sum_n c_n J1(lam_n b) = 0;                               (vi)
+
+* ``"torque"``: the torque of the traction actually present, the truncated series on
+  the stick disc and the friction limit 1 on the slip annulus, equals T*,
+
+      T* = 4 int_0^b q(r) r^2 dr + (4/3)(1 - b^3),
+      int_0^b q r^2 dr = T* b^4/4 - sum_n c_n lam_n S_n.                         (vii)
+
+  Since every eigenfunction carries zero torque, (vii) says the slip-zone residual
+  1 - q carries no torque.  For the printed system, whose residual tends to alpha r
+  (see above), (vi) and (vii) both force alpha -> 0 as N grows instead of regularity.
+
 Limits: b = 1 gives c = 0, omega = 0 and T* = 1 exactly (slip onset, eq. 5).  b = 0
 (spinning) decouples (iii) into c_m lam_m h_m = B_m with T* = 4/3 (torque balance
 for traction 1) and omega -> +infinity (omega grows like ln(1/b)/2 as b -> 0).
@@ -99,9 +119,14 @@ __all__ = [
     "resolution_limit",
     "terms_to_resolve",
     "minimum_inverse_terms",
+    "CLOSURES",
+    "closure_torque",
 ]
 
 METHODS = ("published", "complete")
+
+#: How T* is fixed for a given b (see the module docstring): (v), (vi) or (vii).
+CLOSURES = ("traction", "displacement", "torque")
 
 #: Largest N accepted: the dense (N+1)^2 system and its equilibrated copy take ~16 N^2
 #: bytes (1.6 GB at N = 10000) and the solve ~N^3/3 flops (about a minute on 2 cores).
@@ -212,7 +237,35 @@ def _gross_slip(method: str, lam: np.ndarray) -> SeriesSolution:
     return SeriesSolution(method, 0.0, GROSS_SLIP_TORQUE, omega, lam, amplitudes, 1.0)
 
 
-def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 145) -> SeriesSolution:
+def closure_torque(closure: str, method: str, lam: np.ndarray, b: float, x_torque: np.ndarray,
+                   x_constant: np.ndarray) -> float:
+    """T* from the closure (v), (vi) or (vii), given the solution c = x_constant + T* x_torque of (iii)-(iv).
+
+    ``x_torque``, ``x_constant``: solutions for the two right-hand sides of ``assemble`` (the
+    last entry is omega for ``complete``).  Each closure is linear in T*.
+    """
+    n = lam.size
+    if closure == "traction":
+        weight = lam * special.j1(lam * b)
+        # (v): T* b - w.(c_K + T* c_L) = 1
+        return (1.0 + weight @ x_constant[:n]) / (b - weight @ x_torque[:n])
+    if closure == "displacement":
+        # (vi): omega b + J1(lam b).c = 0, omega = 0 for the printed system
+        weight = special.j1(lam * b)
+        at_b = [weight @ x_torque[:n], weight @ x_constant[:n]]
+        if method == "complete":
+            at_b = [at_b[0] + b * x_torque[n], at_b[1] + b * x_constant[n]]
+        return -at_b[1] / at_b[0]
+    if closure == "torque":
+        # (vii): T* (1 - b^4 + 4 w.c_L) = (4/3)(1 - b^3) - 4 w.c_K, w_n = lam_n S_n
+        weight = lam * integrals.stick_moment(lam, b)
+        return (((4.0 / 3.0) * (1.0 - b**3) - 4.0 * weight @ x_constant[:n])
+                / (1.0 - b**4 + 4.0 * weight @ x_torque[:n]))
+    raise ValueError(f"closure must be one of {CLOSURES}, got {closure!r}")
+
+
+def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 145,
+                 closure: str = "traction") -> SeriesSolution:
     """Solve eq. (38) (``published``) or (iii)-(iv) (``complete``) for a stick radius.
 
     Parameters
@@ -222,6 +275,10 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
     method : {"published", "complete"}
     n_terms : int
         Number N of eigenfunctions J1(lam_n r) (the paper used 145).
+    closure : {"traction", "displacement", "torque"}
+        How T* is fixed: traction continuity (v) at r = b (default), the stick condition
+        (vi) at r = b, or the torque of the traction actually present (vii).  The
+        exact solution satisfies all three; the truncated systems do not.
 
     Returns
     -------
@@ -237,6 +294,8 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
     UnphysicalResultWarning
         If the published formulation returns T* > 4/3 (physically impossible).
     """
+    if closure not in CLOSURES:
+        raise ValueError(f"closure must be one of {CLOSURES}, got {closure!r}")
     b = float(stick_radius)
     lam = bessel_j2_zeros(n_terms)
     if b == 0.0:
@@ -267,9 +326,7 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
         )
     x_torque, x_constant = x[:, 0], x[:, 1]
     n = lam.size
-    weight = lam * special.j1(lam * b)
-    # (v): T* b - w.(c_K + T* c_L) = 1
-    torque = (1.0 + weight @ x_constant[:n]) / (b - weight @ x_torque[:n])
+    torque = closure_torque(closure, method, lam, b, x_torque, x_constant)
     coeffs = x_constant + torque * x_torque
     omega = float(coeffs[n]) if method == "complete" else math.nan
     if not 1.0 <= torque <= GROSS_SLIP_TORQUE or not math.isfinite(torque):

@@ -15,7 +15,8 @@ continuity at r = b), which the paper does not state; see ``settings`` for this 
 
 The checks are split by the paper's sections: ``bilateral`` (eqs. 1-6), ``conditions``
 (7-9), ``solution_e`` (10-19), ``quoted`` (20, the decay of section 4, Fig. 5),
-``series_terms`` (21-26), ``dual_series`` (27-32), ``weak_form`` (33-38), ``appendix_b``
+``series_terms`` (21-26), ``dual_series`` (27-32), ``weak_form`` (33-38), ``closures`` (the
+printed scheme under three closures), ``appendix_b``
 (34, 35, 51-53), ``appendix_a`` (39-50) and ``statements`` (the text of sections 3-4);
 ``checks`` assembles the table, ``coverage`` maps it onto the equations 1-53, ``rules``
 states the verdict rules and ``report`` writes the table as Markdown.

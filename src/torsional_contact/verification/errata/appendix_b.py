@@ -229,5 +229,8 @@ def check_series_hazard():
             note_latex,
             digits_kept=[round(float(k), 2) for k in kept],
             stable_form_max_rel_error=stable_err,
+            summary_latex=(rf"Summed term by term in double precision, the ${{}}_1F_2$ of (51) keeps fewer than "
+                           rf"{HAZARD_DIGITS_KEPT} digits from $\lambda_{{2,{first_bad + 1}}}$ on."
+                           if first_bad is not None else note_latex),
         )
     ]

@@ -8,6 +8,7 @@ import time
 from .appendix_a import check_appendix_a
 from .appendix_b import check_appendix_b, check_dini_norm, check_series_hazard
 from .bilateral import check_bilateral, check_pressure
+from .closures import check_closures
 from .conditions import check_conditions
 from .coverage import sort_key
 from .dual_series import check_dual_series
@@ -39,6 +40,7 @@ _CHECKS = (
     check_limits,
     check_truncation,
     check_torque_evaluation,
+    check_closures,
     check_completeness,
     check_fig5,
 )
@@ -76,6 +78,9 @@ def _as_printed_verdicts(rows):
                             "lam ~ 20 (see row 51-series); the library sums a stable form instead.")
         formula["note_latex"] += (r" Summed as the printed ${}_1F_2$ power series in double precision it is "
                                   r"unusable beyond $\lambda \approx 20$ (next row).")
+        formula["details"] = {**formula["details"], "summary_latex": (
+            r"Exact, but as printed (a ${}_1F_2$ power series) unusable in double precision beyond "
+            r"$\lambda \approx 20$; a stable form of the same integral is exact to rounding.")}
     return rows
 
 

@@ -1,8 +1,8 @@
 """Which of the paper's numbered equations (1-53) have a row in the errata table.
 
 A row's ``equation`` label names the equations it checks: "35" -> (35), "A.40" -> (40)
-(Appendix A keeps the paper's numbering), "33-38" -> (33)..(38), "38-weighting" and
-"51-series" -> (38) and (51); statements of the text ("Sec.4-decay", "Fig.5", ...) name none.
+(Appendix A keeps the paper's numbering), "33-38" -> (33)..(38), "51-series" -> (51); statements of
+the text and of the scheme ("Sec.3-weighting", "Sec.4-decay", "completeness", "Fig.5", ...) name none.
 """
 
 from __future__ import annotations

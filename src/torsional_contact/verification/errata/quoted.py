@@ -113,8 +113,8 @@ def check_fig5():
             f"The truth gives T*(0.6) = {truth:.4f} (complete weak form at N = {N_PAPER}: {comp145:.4f}), so 1.23 "
             f"is right.  The paper's own eq. (38) gives {pub:.4f} ({v_pub}, rel. discrepancy {d_pub:.3f}); with "
             f"eq. (38), T* = 1.23 would mean b = {b_pub:.3f}." + CLOSURE_TAG,
-            rf"The truth gives $T^*(0.6) = {fixed(truth, 4)}$, so the quoted $1.23$ is right; the published system "
-            rf"gives ${fixed(pub, 4)}$, and with it $T^* = 1.23$ would mean $b/a = {fixed(b_pub, 3)}$."
+            rf"The truth gives $T^*(0.6) = {fixed(truth, 4)}$, so the quoted $1.23$ is right; the reconstructed "
+            rf"printed scheme gives ${fixed(pub, 4)}$, and with it $T^* = 1.23$ would mean $b/a = {fixed(b_pub, 3)}$."
             + CLOSURE_TAG_LATEX,
             kind="quoted",
             depends_on_closure=True,

@@ -17,10 +17,12 @@ __all__ = ["threshold", "formula_rule", "double_rule", "verdict_rules", "closure
 TRUTH = "the truth (the Abel-Fredholm solution torsional_contact.solve(stick_radius=b))"
 
 #: Appended to both notes of rows whose verdict or numbers use the closure (v).
-CLOSURE_TAG = (" These 'published' numbers use this project's closure (T* fixed by traction continuity at r = b), "
-               "which the paper does not state.")
-CLOSURE_TAG_LATEX = (r" These `published' numbers use this project's closure ($T^*$ fixed by continuity of the "
-                     r"traction at $r = b$), which the paper does not state.")
+CLOSURE_TAG = (" These numbers are for the reconstructed printed scheme: the printed equations closed by this "
+               "project's choice (T* fixed by traction continuity at r = b), which the paper does not state; row "
+               "Sec.3-closure says which findings survive other closures.")
+CLOSURE_TAG_LATEX = (r" These numbers are for the reconstructed printed scheme (the printed equations closed by "
+                     r"continuity of the traction at $r = b$, which the paper does not state; the closures row says "
+                     r"which findings survive other closures).")
 
 
 def threshold(name: str) -> str:
@@ -56,9 +58,11 @@ def verdict_rules(latex: bool = False) -> str:
             r"significant digits, or (for the truncation $N = 145$) the series coefficients differ from the exact "
             rf"ones, or change when $N$ grows, by more than ${sci(s.NEGLIGIBLE_CHANGE, 0)}$ relative while $T^*$ "
             r"stays within the quoted precision. \emph{Incorrect}: none of these. Solutions are compared with the "
-            r"Abel--Fredholm solution (verified to about $10^{-13}$ against a 30-digit reference); a torque counts "
-            r"as right within half a unit of the last digit of the quoted $T^* = 1.23$, i.e.\ "
-            rf"${sci(s.QUOTED_TORQUE_HALF_UNIT)}$ relative."
+            r"Abel--Fredholm solution (its torque verified to better than $10^{-13}$ against a 30-digit evaluation); "
+            r"a torque counts as right within half a unit of the last digit of the quoted $T^* = 1.23$, i.e.\ "
+            rf"${sci(s.QUOTED_TORQUE_HALF_UNIT)}$ relative. A row labelled by an equation judges the formula as "
+            r"printed; a row labelled by a section judges a statement of the text or the scheme the equations "
+            r"form, so a formula can be correct while the scheme built on it is not."
         )
     return (
         f"Correct: a formula agrees with an independent computation at {s.WORK_DPS} digits to "
@@ -69,10 +73,12 @@ def verdict_rules(latex: bool = False) -> str:
         f"double evaluation over lam <= lam_{s.N_PAPER} keeps fewer than {s.HAZARD_DIGITS_KEPT} digits "
         "(HAZARD_DIGITS_KEPT), or (truncation N = 145) the coefficients differ from the exact ones, or change when "
         f"N grows, by more than {s.NEGLIGIBLE_CHANGE:g} (NEGLIGIBLE_CHANGE) while T* stays within the quoted "
-        "precision. Incorrect: none of these. Solutions are compared with the Abel-Fredholm solution (verified to "
-        "~1e-13 against a 30-digit reference); a torque is right within "
+        "precision. Incorrect: none of these. Solutions are compared with the Abel-Fredholm solution (its torque "
+        "verified to better than 1e-13 against a 30-digit evaluation); a torque is right within "
         f"{s.QUOTED_TORQUE_HALF_UNIT:.1e} relative (QUOTED_TORQUE_HALF_UNIT, half a unit of the last digit of the "
-        "quoted 1.23)."
+        "quoted 1.23). A row labelled by an equation judges the formula as printed; a row labelled by a section "
+        "judges a statement of the text or the scheme the equations form, so a formula can be correct while the "
+        "scheme built on it is not."
     )
 
 
@@ -85,12 +91,14 @@ def closure_caveat(latex: bool = False) -> str:
             r"checked here are the printed equations together with this project's closure ($T^*$ fixed by "
             r"continuity of the truncated traction at $r = b$), which the paper never states. The paper's own "
             r"results ($b/a = 0.6$ at $T^* = 1.23$, a torque curve ending at $4/3$) agree with the corrected "
-            r"solution, not with this reconstruction; rows that depend on the closure are marked $\dagger$."
+            r"solution, not with this reconstruction (the reconstructed printed scheme); rows that depend on the "
+            r"closure are marked $\dagger$, and the closures row repeats the measurements under two other closures."
         )
     return (
         "The paper fixes b, solves (38) and 'evaluates the torque actually present', but that torque equals any "
         "imposed T*, so the printed equations do not determine T*(b). The 'published' results checked here are the "
         "printed equations plus this project's closure (T* fixed by continuity of the truncated traction at r = b), "
         "which the paper never states. The paper's own results (b/a = 0.6 at T* = 1.23, a torque curve ending at "
-        "4/3) agree with the corrected solution, not with this reconstruction; rows that depend on the closure say so."
+        "4/3) agree with the corrected solution, not with this reconstruction (the reconstructed printed scheme); rows "
+        "that depend on the closure say so, and row Sec.3-closure repeats the measurements under two other closures."
     )

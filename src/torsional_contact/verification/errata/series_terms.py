@@ -90,9 +90,11 @@ def measure_series(printed=None, zeros=None) -> dict:
 
 
 _NOTES = {
-    "21": ("Each term is (14) with lam_n = lam_(2,n)/a: the series is harmonic and satisfies (9) term by term.",
+    "21": ("Each term is (14) with lam_n = lam_(2,n)/a: the series is harmonic and satisfies (9) term by term.  "
+           "(The series is not complete: it lacks the rigid rotation; see the statement row 'completeness'.)",
            r"Each term is (14) with $\lambda_n = \lambda_{2,n}/a$: the series is harmonic and satisfies the side "
-           r"condition (9) term by term."),
+           r"condition (9) term by term. That it is not complete (it lacks the rigid rotation) is judged in the "
+           r"Sec.~3 row on completeness."),
     "22": ("Exact: (10) applied to (21) term by term (1/mu and the a-scaling included).",
            r"Exact: it is (10) applied to (21) term by term, including the factor $1/\mu$ and the scaling with $a$."),
     "23": ("Exact: (16) summed over lam_n.", r"Exact: it is (16) summed over $\lambda_n = \lambda_{2,n}/a$."),

@@ -39,9 +39,11 @@ Reconstruction caveat
 ---------------------
 The paper fixes b, solves (38) and 'evaluates the torque actually present'; that torque
 equals any imposed T* (row Sec.3-torque), so the printed equations do not determine
-T*(b).  What the checks call the 'published' results are the printed equations PLUS this
-project's closure: T* fixed by continuity of the truncated traction at r = b (condition
-(v) of ``solvers.weak_form``), which the paper never states.  The paper's own reported
+T*(b).  What the checks call the 'published' results (the reconstructed printed scheme) are
+the printed equations PLUS this project's closure: T* fixed by continuity of the truncated
+traction at r = b (condition (v) of ``solvers.weak_form``), which the paper never states.
+Row Sec.3-closure (``closures``) repeats the measurements under the two other closures of
+``solvers.weak_form`` and says which findings survive them.  The paper's own reported
 results (b/a = 0.6 at T* = 1.23, a torque curve ending at 4/3) agree with the corrected
 (complete, Abel-Fredholm) solution, not with this reconstruction, so the original
 computation may have closed the system differently.  Rows whose verdict or numbers
