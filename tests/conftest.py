@@ -17,3 +17,10 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         if item.module.__name__.endswith("test_errata") and "table" in getattr(item, "fixturenames", ()):
             item.add_marker(pytest.mark.slow)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """Write the headroom records of this process (only with TORSIONAL_HEADROOM set; tests/tolerances.py)."""
+    from tolerances import write_records
+
+    write_records()
