@@ -29,7 +29,8 @@ import sys
 import numpy as np
 
 __all__ = ["EPS", "assert_within", "assert_close", "assert_beyond", "write_records", "seeds", "torque_accuracy",
-           "ROTATION_ACCURACY", "PROFILE_ACCURACY", "onset_remainder", "slip_rounding", "profile_accuracy"]
+           "ROTATION_ACCURACY", "PROFILE_ACCURACY", "onset_remainder", "slip_rounding", "profile_accuracy",
+           "spinning_table_bound"]
 
 #: Machine epsilon of IEEE double (2.2e-16), the unit of every rounding bound.
 EPS = float(np.finfo(float).eps)
@@ -68,6 +69,30 @@ def slip_rounding(s, r=1.0):
     r = np.asarray(r, dtype=float)
     width = np.minimum(1.0, 4.0 / math.pi * np.sqrt(np.clip(1.0 - (b / np.maximum(r, b)) ** 2, 0.0, None)))
     return 5.0 * eps_d * r * width
+
+
+def spinning_table_bound(t):
+    """Bound on the error of ``kernels.spinning_transform`` (the table of E_1) at t.
+
+    Its samples are m-term xi-sums (m = 576 at the table's smallest 1 - t), interpolated in psi = arccos t with a
+    Lebesgue constant below 4: 4 m EPS |E_1|.  Its interpolation error grows toward the corner t = 1 (psi = 0),
+    where E_1 is not analytic ((1 - t) log terms): bounded by ten times the change of the table from 48 to 96
+    points (an a-posteriori estimate; the coarser table's error dominates that change).
+    """
+    from numpy.polynomial import chebyshev
+
+    from torsional_contact.solvers import kernels
+
+    t = np.asarray(t, dtype=float)
+    saved = kernels._SPIN_POINTS  # noqa: SLF001
+    try:
+        kernels._SPIN_POINTS = 48  # noqa: SLF001
+        coarse = kernels._spinning_chebyshev.__wrapped__()  # noqa: SLF001
+    finally:
+        kernels._SPIN_POINTS = saved  # noqa: SLF001
+    x = np.arccos(np.clip(t, 0.0, 1.0)) / (np.pi / 4.0) - 1.0
+    table = kernels.spinning_transform(t)
+    return 4 * 576 * EPS * np.abs(table) + 10 * np.abs(table - t * chebyshev.chebval(x, coarse))
 
 
 def torque_accuracy(b) -> float:
