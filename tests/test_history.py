@@ -24,6 +24,7 @@ from hypothesis import strategies as st
 from tolerances import (
     EPS,
     PROFILE_ACCURACY,
+    ROTATION_ACCURACY,
     assert_beyond,
     assert_close,
     assert_within,
