@@ -22,6 +22,7 @@ from tolerances import (
     assert_close,
     assert_within,
     onset_remainder,
+    rotation_b2_coefficient,
     seeds,
     torque_accuracy,
 )
@@ -34,7 +35,6 @@ from torsional_contact.curves.table import CURVES as TABULATED
 from torsional_contact.curves.table import lobatto_coefficients, panel_edges, read_table
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle, threshold_asymptotics
 from torsional_contact.quadrature import gauss_legendre_panels
-from torsional_contact.solvers import kernels
 from torsional_contact.solvers.abel_fredholm import solve_fast
 
 CURVES = monotonic_curves()
@@ -215,15 +215,6 @@ def test_curve_ends_and_regimes():
                   "(S1) remainder + table bound of T* (last table panel)")
 
 
-def _rotation_b2_coefficient() -> float:
-    """c2 of omega + ln(b)/2 = c0 + c2 b^2 + O(b^4 ln b) (S6): -1/8 from arcsech(b)/2 = ln(2/b)/2 - b^2/8 - ..., and
-    e2/2 from e(b) = E_1(b)/b = e0 + e2 b^2 + ... (E_1 is odd), e2 from the table of E_1 at b = 1e-2, 5e-3."""
-    t = np.array([1e-2, 5e-3])
-    e = kernels.spinning_transform(t) / t
-    e2 = (e[0] - e[1]) / (t[0] ** 2 - t[1] ** 2)
-    return e2 / 2 - 1 / 8
-
-
 def test_small_disc_asymptotes():
     """4/3 - T* ~ (16 / (9 pi)) b^3 and omega + ln(b)/2 -> const as b -> 0 (section 'Beyond the table')."""
     b = np.array([1e-5, 1e-4])
@@ -231,7 +222,7 @@ def test_small_disc_asymptotes():
     assert_close(CURVES.torque_gap(b) / b**3, 16 / (9 * np.pi), "(S7) truncation: 10 b^2 relative",
                  rtol=10 * b**2 + GAP_ACCURACY)
     # omega + ln(b)/2 = c0 + c2 b^2 + O(b^4 ln b): the difference between the two radii is c2 (b0^2 - b1^2)
-    c2 = _rotation_b2_coefficient()
+    c2 = rotation_b2_coefficient()
     constant = CURVES.rotation_at_radius(b) + 0.5 * np.log(b)
     tables = sum(_curve_bound("rigid_rotation", x, ROTATION_ACCURACY) for x in b)
     assert_within(abs(constant[0] - constant[1] - c2 * (b[0] ** 2 - b[1] ** 2)),

@@ -30,7 +30,7 @@ import numpy as np
 
 __all__ = ["EPS", "assert_within", "assert_close", "assert_beyond", "write_records", "seeds", "torque_accuracy",
            "ROTATION_ACCURACY", "PROFILE_ACCURACY", "onset_remainder", "slip_rounding", "profile_accuracy",
-           "spinning_table_bound"]
+           "spinning_table_bound", "rotation_b2_coefficient"]
 
 #: Machine epsilon of IEEE double (2.2e-16), the unit of every rounding bound.
 EPS = float(np.finfo(float).eps)
@@ -93,6 +93,17 @@ def spinning_table_bound(t):
     x = np.arccos(np.clip(t, 0.0, 1.0)) / (np.pi / 4.0) - 1.0
     table = kernels.spinning_transform(t)
     return 4 * 576 * EPS * np.abs(table) + 10 * np.abs(table - t * chebyshev.chebval(x, coarse))
+
+
+def rotation_b2_coefficient() -> float:
+    """c2 of omega + ln(b)/2 = c0 + c2 b^2 + O(b^4 ln b) (S6): -1/8 from arcsech(b)/2 = ln(2/b)/2 - b^2/8 - ..., and
+    e2/2 from e(b) = E_1(b)/b = e0 + e2 b^2 + ... (E_1 is odd), e2 from the table of E_1 at b = 1e-2, 5e-3."""
+    t = np.array([1e-2, 5e-3])
+    from torsional_contact.solvers import kernels
+
+    e = kernels.spinning_transform(t) / t
+    e2 = (e[0] - e[1]) / (t[0] ** 2 - t[1] ** 2)
+    return e2 / 2 - 1 / 8
 
 
 def torque_accuracy(b) -> float:
