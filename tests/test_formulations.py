@@ -5,7 +5,7 @@ import warnings
 import numpy as np
 import pytest
 from quadrature import integrate
-from tolerances import EPS, assert_close, assert_within, rotation_b2_coefficient
+from tolerances import EPS, WEAK_FORM_TRUNCATION, assert_close, assert_within, rotation_b2_coefficient
 
 from torsional_contact import ResolutionWarning, solve
 from torsional_contact.diagnostics import UnphysicalResultWarning
@@ -35,11 +35,7 @@ def interface_errors(b, n_terms):
     }
 
 
-#: Truncation bounds K / N^p of the complete weak form's interface conditions, with the orders of
-#: tests/test_convergence.py (the traction at the corner r = 1 converges like 1/N; the slip on the stick disc and
-#: the torque balance of the traction at least like 1/N^2) and K a round number more than ten times the largest
-#: coefficient that N = 145 and N = 1160 give (0.2, 0.22 and 0.012).
-TRUNCATION = {"slip_traction": (3.0, 1), "stick_slip": (3.0, 2), "torque_balance": (0.2, 2)}
+TRUNCATION = WEAK_FORM_TRUNCATION  # tests/tolerances.py
 
 
 @pytest.mark.parametrize("b", [0.3, 0.6, 0.9])
