@@ -196,6 +196,7 @@ def test_curve_ends_and_regimes():
     assert CURVES.stick_radius(spin) == 0.0 and CURVES.rotation(spin) == math.inf == CURVES.work(spin)
     # every double below 4/3 (beyond the spinning tolerance) is covered by the table
     tau = np.nextafter(spin * (1 - 4 * np.finfo(float).eps), 0.0)
+    # 4/3 - tau ~ 4 ulp of 4/3 = 1.2e-15, so b ~ ((9 pi/16) x 1.2e-15)^(1/3) = 1.3e-5
     assert 0 < CURVES.stick_radius(tau) < 3e-5 and math.isfinite(CURVES.rotation(tau))
     # small slip annuli: the asymptotes continue the table, both within their bounds of the truth
     edge = CURVES.trust_torque

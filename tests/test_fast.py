@@ -250,7 +250,7 @@ def test_interface_conditions_and_identities(b):
     # stick disc: no slip; traction rises continuously to 1 (no inverse sqrt at r = b)
     assert np.all(fast.interface_slip(np.linspace(0, b, 20)) == 0)
     gap = 1 - fast.interface_traction(b * (1 - np.array([1e-12, 1e-8])))
-    assert np.all(gap > 0) and np.all(gap < 1e-3)
+    assert np.all(gap > 0) and np.all(gap < 1e-3)  # 1 - q = C sqrt(b - r) <= C 1e-4, C < 10
     # (F3): g(b) = G(b) - arcsech(b) from the Chebyshev series of G (n_cheb terms of O(1)): n_cheb EPS x 4
     assert_within(abs(fast.abel_transform(np.array([b]))[0]), 4 * fast._g_chebyshev.size * EPS * 4,
                   "rounding of the series of G at the stick edge")
@@ -337,7 +337,7 @@ def test_agrees_with_direct_collocation(b, n_basis):
     from torsional_contact.verification.collocation import solve_direct
 
     fast, direct = solve_fast(b), solve_direct(b, n_basis)
-    assert direct.residual < 1e-12
+    assert direct.residual < 1e-12  # the collocation's own convergence criterion
     # the collocation's truncation with n_basis functions (its residual < 1e-12) amplified by the conditioning of
     # the first-kind system (~10): 1e-11 for T*, 2e-11 for omega, 5e-11 for the traction's pointwise values
     assert_within(abs(direct.torque - fast.torque), 1e-11, "collocation truncation x conditioning")
