@@ -99,10 +99,11 @@ def test_halfspace_kernel_against_abel_form():
 
         exact = 2 * mpmath.quad(integrand, [0, mpmath.pi / 2]) / (mpmath.pi * r * rho)
         # complete elliptic integrals (scipy, a few ulp) of m = 4 r rho / (r + rho)^2 (1 - m formed exactly), in
-        # (1 - m/2) K - E, which cancels like m^2 for small m: 64 EPS / m^2
+        # (1 - m/2) K - E: terms up to K ~ ln(4 / sqrt(1 - m)) times the result, cancelling like m^2 for small m
         m = 4 * r * rho / (r + rho) ** 2
-        assert_within(abs(kernels.halfspace_kernel(r, rho) / float(exact) - 1), 64 * EPS / m**2,
-                      "elliptic integrals, cancellation ~ m^2: 64 EPS / m^2")
+        big_k = math.log(4 / math.sqrt(1 - m))
+        assert_within(abs(kernels.halfspace_kernel(r, rho) / float(exact) - 1), 64 * EPS * (1 + big_k) / m**2,
+                      "elliptic integrals: 64 EPS (1 + K) / m^2")
 
 
 @pytest.mark.parametrize("r", [0.2, 0.5, 0.8])
@@ -217,9 +218,12 @@ def test_dini_representation_of_the_solution(b):
     # sums over 32 Gauss nodes per panel, up to ~1300 panels, of terms ~ |c| lam h: rounding 4e4 EPS |c|
     small = fast.dini_amplitudes(50)
     assert_close(small, amplitudes[:50], "rounding of the moment sums", atol=4e4 * EPS * np.max(np.abs(small)))
-    # the complete weak form at N = 2000: its amplitudes' truncation error, O(ln N / N) x 0.1
+    # the complete weak form at N = 2000: its amplitudes' truncation error, which falls like ln N / N (as T*'s,
+    # test_agrees_with_extrapolated_weak_form): below the change from N = 60, which is 16 times it
     weak = solve_series(b, "complete", 2000).amplitudes[:5]
-    assert_close(weak, amplitudes[:5], "weak-form truncation at N = 2000: 0.1 ln N / N", atol=0.1 * np.log(2000) / 2000)
+    coarse = solve_series(b, "complete", 60).amplitudes[:5]
+    assert_close(weak, amplitudes[:5], "weak-form truncation at N = 2000: the change from N = 60",
+                 atol=np.abs(weak - coarse))
 
 
 # -- physics -------------------------------------------------------------------------
@@ -253,8 +257,10 @@ def test_interface_conditions_and_identities(b):
     assert np.all(fast.interface_slip(np.linspace(0, b, 20)) == 0)
     gap = 1 - fast.interface_traction(b * (1 - np.array([1e-12, 1e-8])))
     assert np.all(gap > 0) and np.all(gap < 1e-3)  # 1 - q = C sqrt(b - r) <= C 1e-4, C < 10
-    # (F3): g(b) = G(b) - arcsech(b) from the Chebyshev series of G (n_cheb terms of O(1)): n_cheb EPS x 4
-    assert_within(abs(fast.abel_transform(np.array([b]))[0]), 4 * fast._g_chebyshev.size * EPS * 4,
+    # (F3): g(b) = G(b) - arcsech(b) from the Chebyshev series of G (n_cheb terms, G ~ arcsech(b) ~ ln(2/b)):
+    # 4 n_cheb EPS x 4 max(1, arcsech b)
+    scale = 4 * max(1.0, math.acosh(1 / b))
+    assert_within(abs(fast.abel_transform(np.array([b]))[0]), 4 * fast._g_chebyshev.size * EPS * scale,
                   "rounding of the series of G at the stick edge")
     # omega = 4 int u r^2 dr = 2 int s r^2 dr (every Dini term is orthogonal to r)
     # r = b + (1 - b) sin^2(phi) makes (r - b)^(3/2) and sqrt(1 - r) analytic in phi
