@@ -361,7 +361,7 @@ def test_energy_of_a_closed_cycle_is_w(t_min, t_max):
     """dissipated_energy grows by W(A) over a closed cycle; the sampled loop's area and frictional work agree.
 
     Independent routes: the state energies (rule 5, W_mono of curves.work), the trapezoidal loop
-    area pi oint T* d omega of 400 states per stretch (second order: measured 1e-6) and the
+    area pi oint T* d omega of 400 states per stretch (second order) and the
     frictional work 2 pi oint int q ds r dr of the same states' profiles.
     """
     states = H.history([t_max, t_min, t_max, t_min, t_max])
