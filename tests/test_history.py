@@ -11,6 +11,7 @@ method is the Abel-Fredholm one; ``WEAK`` selects the paper's weak form at N = 1
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import subprocess
@@ -52,17 +53,20 @@ def _torque_slope(b: float) -> float:
     return abs(float(monotonic_curves().by_radius["torque"].derivative(b)))
 
 
+@functools.cache
+def _truncation_at(c: float, n_terms: int) -> tuple:
+    """(T*, omega, traction, slip) truncation errors of the weak form at N for the monotonic solution at c."""
+    weak, exact = solve(stick_radius=c, method="complete", n_terms=n_terms), solve(stick_radius=c)
+    return (abs(weak.torque - exact.torque), abs(weak.rigid_rotation - exact.rigid_rotation),
+            float(np.max(np.abs(weak.traction(R) - exact.traction(R))[_away(R, [c])])),
+            float(np.max(np.abs(weak.slip(R) - exact.slip(R)))))
+
+
 def _truncation(radii, n_terms=N):
     """The truncation error of the weak form at N for the monotonic solutions at ``radii`` (against the exact
     Abel-Fredholm solution), summed: T*, omega, traction (0.05 away from the fronts) and slip."""
-    out = {"torque": 0.0, "rigid_rotation": 0.0, "traction": 0.0, "slip": 0.0}
-    for c in radii:
-        weak, exact = solve(stick_radius=c, method="complete", n_terms=n_terms), solve(stick_radius=c)
-        out["torque"] += abs(weak.torque - exact.torque)
-        out["rigid_rotation"] += abs(weak.rigid_rotation - exact.rigid_rotation)
-        out["traction"] += float(np.max(np.abs(weak.traction(R) - exact.traction(R))[_away(R, [c])]))
-        out["slip"] += float(np.max(np.abs(weak.slip(R) - exact.slip(R))))
-    return out
+    errors = np.sum([_truncation_at(float(c), n_terms) for c in radii], axis=0)
+    return dict(zip(("torque", "rigid_rotation", "traction", "slip"), (float(e) for e in errors), strict=True))
 
 
 def _direct(states, n_terms=N, solve_for_torque=True):

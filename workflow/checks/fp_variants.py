@@ -49,13 +49,13 @@ def main(argv=None) -> int:
     parser.add_argument("variants", nargs="*", default=list(NAMES), help=f"any of {', '.join(NAMES)} (default: all)")
     parser.add_argument("--seed", type=int, default=None, help="seed of the random draws (default: a fresh one)")
     parser.add_argument("--workers", type=int, default=2, help="pytest-xdist workers (default 2)")
-    parser.add_argument("pytest_args", nargs=argparse.REMAINDER, help="after --: extra pytest arguments")
-    args = parser.parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    extra = argv[argv.index("--") + 1 :] if "--" in argv else []  # after --: extra pytest arguments
+    args = parser.parse_args(argv[: argv.index("--")] if "--" in argv else argv)
     unknown = [v for v in args.variants if v not in NAMES]
     if unknown:
         parser.error(f"unknown variant {unknown[0]!r}; choose from {', '.join(NAMES)}")
     seed = random.randrange(1, 2**31) if args.seed is None else args.seed
-    extra = [a for a in args.pytest_args if a != "--"]
     print(f"fp_variants: seed {seed} (replay with --seed {seed})", flush=True)
     ok = True
     for name in args.variants:

@@ -78,10 +78,10 @@ def main(argv=None) -> int:
     parser.add_argument("--seed", type=int, default=None, help="seed of the random draws (default: a fresh one)")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--json", default=None, help="also write every record to this file")
-    parser.add_argument("pytest_args", nargs=argparse.REMAINDER, help="after --: extra pytest arguments")
-    args = parser.parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    extra = argv[argv.index("--") + 1 :] if "--" in argv else []  # after --: extra pytest arguments
+    args = parser.parse_args(argv[: argv.index("--")] if "--" in argv else argv)
     seed = random.randrange(1, 2**31) if args.seed is None else args.seed
-    extra = [a for a in args.pytest_args if a != "--"]
     rows, failures = [], 0
     for variant in args.variants:
         found, code = collect(variant, seed, args.workers, extra)
