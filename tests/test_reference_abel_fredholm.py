@@ -349,9 +349,9 @@ def test_agrees_with_direct_collocation(references):
 
     direct = solve_direct(0.3, 8)
     ref = references["0.3"]
-    # the collocation's own truncation (8 basis functions: residual < 1e-12) amplified by its conditioning
-    assert_within(abs(direct.torque - float(ref.torque)), 1e-11, "collocation with 8 basis functions")
-    assert_within(abs(direct.rigid_rotation - float(ref.rigid_rotation)), 2e-11, "collocation with 8 basis functions")
+    # the collocation's stated accuracy (tests/test_fast.py, COLLOCATION: limited by its brute-force kernels)
+    assert_within(abs(direct.torque - float(ref.torque)), 1e-10, "stated accuracy of the collocation")
+    assert_within(abs(direct.rigid_rotation - float(ref.rigid_rotation)), 1e-10, "stated accuracy of the collocation")
 
 
 @pytest.mark.slow
