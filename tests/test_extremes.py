@@ -171,13 +171,14 @@ def test_default_method_near_onset_balances_torque(b):
                   "round trip: 2 x solver T* accuracy over |dT*/db| = 2/pi")
 
 
-@pytest.mark.parametrize("delta", [1e-3, 3e-4, 1e-4, 3e-5, 1e-5])
+@pytest.mark.parametrize("delta", [1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6])
 def test_onset_expansion_against_abel_fredholm(delta):
     """(S1), (S2) against the Abel-Fredholm method: the residual is O(delta^3 ln delta).
 
     Bounds: the remainder of (S1) with ten times its coefficients (``tolerances.onset_remainder``) plus the
     solver's T* accuracy; omega: the remainder of (S2), O(delta^5 ln delta), plus the rounding of
-    omega = Omega - BETA T* (8 ulp of its O(1) terms).
+    omega = Omega - BETA T* (8 ulp of its O(1) terms).  Below 1 - b = 2e-5 (S1) is exact to rounding, so this
+    verifies the growth of ``tolerances.torque_accuracy`` next to slip onset.
     """
     b = 1.0 - delta
     fast = solve_fast(b)
