@@ -34,7 +34,7 @@ def counts(output: str) -> dict:
 def run(name: str, seed: int, workers: int, extra: list[str]) -> tuple[bool, dict, float, dict]:
     env = {**os.environ, **environment(name, seed)}
     command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-n", str(workers),
-               *pytest_seed_arguments(name, seed), *extra]
+               "--dist", "loadgroup", *pytest_seed_arguments(name, seed), *extra]
     start = time.perf_counter()
     done = subprocess.run(command, cwd=ROOT, env=env, capture_output=True, text=True)
     seconds = time.perf_counter() - start

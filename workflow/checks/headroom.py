@@ -42,7 +42,7 @@ def collect(variant: str, seed: int, workers: int, extra: list[str]) -> tuple[li
     with tempfile.TemporaryDirectory(prefix="headroom-") as directory:
         env = {**os.environ, **environment(variant, seed), "TORSIONAL_HEADROOM": directory}
         command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-n", str(workers),
-                   *pytest_seed_arguments(variant, seed), *extra, *numerical_tests()]
+                   "--dist", "loadgroup", *pytest_seed_arguments(variant, seed), *extra, *numerical_tests()]
         done = subprocess.run(command, cwd=ROOT, env=env, capture_output=True, text=True)
         if done.returncode != 0:
             sys.stdout.write(done.stdout[-4000:])
