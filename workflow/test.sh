@@ -4,6 +4,10 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/prepare.sh"
 ruff check src tests workflow notebooks
+# One BLAS thread, as the workflow pins it (Snakefile): the last digits of LAPACK estimates depend on the thread
+# count.  The tests do not depend on the pin: workflow/checks/fp_variants.py runs them with one and two threads
+# and with numpy's SIMD dispatch at its baseline (CI runs two of those variants after this command).
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
 # every tier (the slow one too: end-to-end builds), on two workers; the workflow tests share one
 # worker (xdist group) because their builds share results/ci and Snakemake's lock
 start=$(date +%s)

@@ -79,9 +79,14 @@ KINDS = ("formula", "definition", "quoted", "statement")
 
 #: Working precision of the formula checks (significant digits).
 WORK_DPS = 40
-#: A formula is exact if it agrees with the independent computation to this relative accuracy.
+#: A formula is exact if it agrees with the independent computation to this relative accuracy.  The checks work
+#: at WORK_DPS = 40 digits and their independent computations (quadrature, numerical differentiation, sums that
+#: cancel) lose at most ~12 of them; a wrong formula (a wrong symbol, factor or sign) is off by O(1), a typo-size
+#: slip by far more than 1e-6: 1e-28 sits orders of magnitude from both (the correct rows measure 1e-36 or less).
 TOL_FORMULA = 1e-28
-#: Same for statements evaluated in double precision.
+#: Same for statements evaluated in double precision: their rounding is a condition number below 1e3 times EPS,
+#: at most ~2e-13, while a false statement is off by O(1) (or, for the 'torque actually present' of Sec. 3, is
+#: exactly true to this rounding); 1e-12.
 TOL_DOUBLE = 1e-12
 #: Fewer significant digits than this from a direct double evaluation: numerically hazardous.
 HAZARD_DIGITS_KEPT = 8
