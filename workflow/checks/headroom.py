@@ -90,7 +90,9 @@ def main(argv=None) -> int:
               flush=True)
         rows += found
     if args.json:
-        Path(args.json).write_text(json.dumps(rows, indent=0, allow_nan=True))
+        from torsional_contact.provenance import write_text  # the one writer of user-named files
+
+        write_text(args.json, json.dumps(rows, indent=0, allow_nan=True), label="--json")
     merged = worst_by_comparison(rows)
     exact = [r for r in merged if r["kind"] == "exact"]
     checked = [r for r in merged if r["kind"] != "exact"]
