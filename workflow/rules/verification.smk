@@ -125,37 +125,72 @@ rule fem_validation:
 PRECISION = config["precision"]
 PRECISION_RADII = [f"{b:g}" for b in PRECISION["stick_radii"]]
 CONVERGENCE_NODES = {f"{row['stick_radius']:g}": row["nodes"] for row in PRECISION["convergence"]}
+if not set(CONVERGENCE_NODES) <= set(PRECISION_RADII):
+    raise ValueError(f"config precision.convergence: stick radii {sorted(set(CONVERGENCE_NODES) - set(PRECISION_RADII))}"
+                     " are not in precision.stick_radii")
 
 
-def convergence_options(wildcards):
-    """The node sweep of one reference radius, if the configuration asks for one."""
-    nodes = CONVERGENCE_NODES.get(wildcards.radius)
-    if not nodes:
+def reference_groups(radii, jobs):
+    """The reference radii in ``jobs`` runs of neighbouring radii of about equal cost.
+
+    Neighbours share working precisions (the torque constant, the xi-quadrature's first panels)
+    and one process start-up.  Cost model (relative, from the jobs' timings): 1 + 0.2/(1 - b) per
+    radius, plus 1 per node count of its convergence study.
+    """
+    def cost(radius):
+        return 1.0 + 0.2 / (1.0 - float(radius)) + len(CONVERGENCE_NODES.get(radius, []))
+
+    jobs = min(jobs, len(radii))
+    ordered = sorted(radii, key=float)
+    share = sum(cost(r) for r in ordered) / jobs
+    groups, current, spent = [], [], 0.0
+    for index, radius in enumerate(ordered):
+        current.append(radius)
+        spent += cost(radius)
+        left = len(ordered) - index - 1
+        if left and (spent >= share * (len(groups) + 1) or left == jobs - len(groups) - 1):
+            groups.append(current)
+            current = []
+    groups.append(current)
+    return groups
+
+
+REFERENCE_GROUPS = reference_groups(PRECISION_RADII, PRECISION["jobs"])
+
+
+def convergence_options(radii):
+    """The node sweeps of the reference radii that have one (the configuration's convergence list)."""
+    sweeps = [f"{r}:{','.join(str(n) for n in CONVERGENCE_NODES[r])}" for r in radii if CONVERGENCE_NODES.get(r)]
+    if not sweeps:
         return ""
     digits = " ".join(str(d) for d in PRECISION["convergence_digits"])
-    return f"--convergence-nodes {' '.join(str(n) for n in nodes)} --convergence-digits {digits}"
+    return f"--convergence {' '.join(sweeps)} --convergence-digits {digits}"
 
 
-rule reference_abel_fredholm:
-    input:
-        script="workflow/scripts/reference_abel_fredholm.py",
-        lib=lib("workflow/scripts/reference_abel_fredholm.py"),
-    output:
-        json=f"{OUT}/verification/abel_fredholm/b{{radius}}.json",
-        timing=f"{OUT}/timings/abel_fredholm/b{{radius}}.json",
-    params:
-        digits=PRECISION["digits"],
-        convergence=convergence_options,
-    log:
-        logfile("abel_fredholm_b{radius}"),
-    wildcard_constraints:
-        radius=r"0\.\d+",
-    resources:
-        runtime=10,
-        mem_mb=1000,
-    shell:
-        "python {input.script} --stick-radius {wildcards.radius} --digits {params.digits} {params.convergence}"
-        " --json {output.json} --timing {output.timing} > {log} 2>&1"
+for _index, _radii in enumerate(REFERENCE_GROUPS, start=1):
+
+    rule:
+        # one job per run of neighbouring radii (reference_groups), one output file per radius
+        name:
+            f"reference_abel_fredholm_{_index}"
+        input:
+            script="workflow/scripts/reference_abel_fredholm.py",
+            lib=lib("workflow/scripts/reference_abel_fredholm.py"),
+        output:
+            json=[f"{OUT}/verification/abel_fredholm/b{r}.json" for r in _radii],
+            timing=[f"{OUT}/timings/abel_fredholm/b{r}.json" for r in _radii],
+        params:
+            radii=" ".join(_radii),
+            digits=PRECISION["digits"],
+            convergence=convergence_options(_radii),
+        log:
+            logfile(f"abel_fredholm_{_index}"),
+        resources:
+            runtime=15,
+            mem_mb=1000,
+        shell:
+            "python {input.script} --stick-radii {params.radii} --digits {params.digits} {params.convergence}"
+            " --json {output.json} --timing {output.timing} > {log} 2>&1"
 
 
 rule precision_ladder:
@@ -200,5 +235,3 @@ rule precision_timing:
         "python {input.script} --timings {input.timings} --key ladder-max-ref-seconds --statistic max"
         " --field seconds --macros {output.macros} > {log} 2>&1"
 
-
-WILDCARDS["reference_abel_fredholm"] = {"radius": PRECISION_RADII}
