@@ -1,15 +1,15 @@
 """Time a clean build of one configuration and the test suite: wall and CPU seconds, per rule.
 
-    .venv/bin/python workflow/checks/benchmark_build.py --clean            # config/config.yaml, then the suite
-    .venv/bin/python workflow/checks/benchmark_build.py --clean --no-tests --configfile config/test.yaml
-    .venv/bin/python workflow/checks/benchmark_build.py --clean --baseline /tmp/old-checkout --repeats 2
+    .venv/bin/python workflow/checks/benchmark_build.py                   # config/config.yaml, then the suite
+    .venv/bin/python workflow/checks/benchmark_build.py --no-tests --configfile config/test.yaml
+    .venv/bin/python workflow/checks/benchmark_build.py --baseline /tmp/old-checkout --repeats 2
 
 What is measured
 ----------------
 * The build: ``snakemake --profile workflow/profiles/default --configfile CONFIG`` (the command
-  ``workflow/main.sh`` runs), from an empty output folder (``--clean`` deletes the configuration's
-  ``outdir`` first; without it an existing non-empty one is an error).  Wall time, and CPU time
-  (user + system, from ``os.wait4``: Snakemake and every process it waited for).
+  ``workflow/main.sh`` runs) into a new, empty output folder (``results/.benchmark-build-*``, removed
+  afterwards with its Snakemake metadata; the configuration's own ``outdir`` is not touched).  Wall
+  time, and CPU time (user + system, from ``os.wait4``: Snakemake and every process it waited for).
 * Each job: ``python`` and ``latexmk`` are put on the jobs' PATH behind a small shell wrapper that
   runs the real program and records its wall time and, from bash's ``times``, the CPU time of it and
   its children, keyed by the job's log file (every rule sends its output to its own log); Snakemake's
@@ -18,8 +18,9 @@ What is measured
   Nothing in the workflow is changed for the measurement, so an older checkout is measured the
   same way (``--baseline``).
 * The test suite: ``bash workflow/test.sh`` (the README's test command: lint and every tier on two
-  workers), wall and CPU time, and the summed duration of each test file from pytest's JUnit XML
-  (tests of one file may run on both workers at once).
+  workers), wall and CPU time, and the summed duration of each test module from pytest's JUnit XML
+  (tests of one module may run on both workers at once).  The suite's own build folder
+  (``results/ci``) is removed first, as from a fresh clone (the suite's last test removes it too).
 
 ``--baseline DIR`` measures another checkout of the repository (e.g. ``git archive`` of an older
 commit, run with this .venv and ``PYTHONPATH=DIR/src``) interleaved with this one, ``--repeats``
@@ -29,12 +30,15 @@ Writes JSON (default: ``<outdir>/timings/build_benchmark.json`` of the measured 
 workflow's ``build_time_table`` rule turns it into the table of Snakemake's report, so run the main
 command once more to refresh ``report.html``) and prints the table.  The machine's load average is
 recorded before and after each run: the machine may be shared, and CPU seconds are the more robust
-figure there.
+figure there.  Caches stay warm between runs (compiled bytecode, matplotlib's font list, TeX's
+formats): a fresh clone pays a few seconds more once.
 """
 
 from __future__ import annotations
 
 import argparse
+import base64
+import binascii
 import json
 import os
 import re
@@ -150,26 +154,40 @@ def aggregate(jobs: list[dict]) -> list[dict]:
     return sorted(rules.values(), key=lambda r: -r["cpu_seconds"])
 
 
-def benchmark_build(checkout: Path, configfile: str, clean: bool, scratch: Path) -> dict:
+def _forget_metadata(checkout: Path, outdir: str) -> None:
+    """Remove Snakemake's metadata of the outputs under ``outdir`` (records named by the base64 path)."""
+    for path in (checkout / ".snakemake" / "metadata").glob("*"):
+        try:
+            name = base64.urlsafe_b64decode(path.name.encode()).decode()
+        except (binascii.Error, UnicodeDecodeError, ValueError):
+            continue
+        if name.startswith(outdir + "/"):
+            path.unlink()
+
+
+def benchmark_build(checkout: Path, configfile: str, scratch: Path) -> dict:
     """One clean build of ``configfile`` in ``checkout`` (see the module docstring)."""
-    outdir = output_folder(checkout, configfile)
-    if outdir.exists() and any(outdir.iterdir()):
-        if not clean:
-            raise SystemExit(f"benchmark_build: {outdir} is not empty (pass --clean to delete it and build afresh)")
-        shutil.rmtree(outdir)
+    (checkout / "results").mkdir(exist_ok=True)
+    outdir = Path(tempfile.mkdtemp(prefix=".benchmark-build-", dir=checkout / "results"))
+    relative = outdir.relative_to(checkout).as_posix()
     records = scratch / "records"
     shutil.rmtree(records, ignore_errors=True)
     records.mkdir(parents=True)
     env = environment(checkout)
     make_shims(scratch / "bin", records, env["PATH"])
     env["PATH"] = f"{scratch / 'bin'}{os.pathsep}{env['PATH']}"
-    command = [sys.executable, "-m", "snakemake", "--profile", PROFILE, "--configfile", configfile]
+    command = [sys.executable, "-m", "snakemake", "--profile", PROFILE, "--configfile", configfile,
+               "--config", f"outdir={relative}"]
     load_before = os.getloadavg()
     since = time.time()
-    wall, cpu, status = timed(command, checkout, env, scratch / "snakemake.log")
-    if status != 0:
-        raise SystemExit(f"benchmark_build: the build failed (status {status}); see {scratch / 'snakemake.log'}")
-    rules = rules_of_logs(checkout, since)
+    try:
+        wall, cpu, status = timed(command, checkout, env, scratch / "snakemake.log")
+        if status != 0:
+            raise SystemExit(f"benchmark_build: the build failed (status {status}); see {scratch / 'snakemake.log'}")
+        rules = rules_of_logs(checkout, since)
+    finally:
+        shutil.rmtree(outdir, ignore_errors=True)
+        _forget_metadata(checkout, relative)
     jobs = []
     for record in read_records(records, checkout):
         if record["log"] not in rules:  # e.g. the report's own snakemake --report (inside the report job)
@@ -178,10 +196,11 @@ def benchmark_build(checkout: Path, configfile: str, clean: bool, scratch: Path)
     jobs.sort(key=lambda j: j["start"])
     for job in jobs:
         job["start"] = round(job["start"] - since, 3)
+        job["log"] = job["log"].replace(relative, "<outdir>")
     job_cpu = sum(j["cpu_seconds"] for j in jobs)
     return {
         "configfile": configfile,
-        "command": "snakemake --profile " + PROFILE + " --configfile " + configfile,
+        "command": f"snakemake --profile {PROFILE} --configfile {configfile}",
         "wall_seconds": wall,
         "cpu_seconds": cpu,
         "job_cpu_seconds": job_cpu,
@@ -196,6 +215,7 @@ def benchmark_build(checkout: Path, configfile: str, clean: bool, scratch: Path)
 def benchmark_tests(checkout: Path, scratch: Path) -> dict:
     """The README's test command in ``checkout``: wall, CPU and the summed time of each test file."""
     scratch.mkdir(parents=True, exist_ok=True)
+    shutil.rmtree(checkout / "results" / "ci", ignore_errors=True)  # as from a fresh clone
     junit = scratch / "junit.xml"
     load_before = os.getloadavg()
     wall, cpu, status = timed(["bash", "workflow/test.sh", f"--junitxml={junit}"], checkout, environment(checkout),
@@ -245,14 +265,13 @@ def table(result: dict) -> str:
 
 def measure(checkout: Path, a, scratch: Path, kind: str) -> dict:
     if kind == "build":
-        return benchmark_build(checkout, a.configfile, a.clean, scratch)
+        return benchmark_build(checkout, a.configfile, scratch)
     return benchmark_tests(checkout, scratch)
 
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--configfile", default="config/config.yaml", help="configuration to build (in the checkout)")
-    p.add_argument("--clean", action="store_true", help="delete the configuration's outdir first (a clean build)")
     p.add_argument("--no-build", action="store_true", help="time only the test suite")
     p.add_argument("--no-tests", action="store_true", help="time only the build")
     p.add_argument("--repeats", type=int, default=1, help="runs of each measurement (median reported), >= 1")

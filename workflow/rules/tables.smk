@@ -98,6 +98,9 @@ rule benchmark_speed_error:
         nodes=config["benchmark"]["nodes"],
         repeats=config["benchmark"]["repeats"],
         digits=config["benchmark"]["reference_digits"],
+        per_radius=config["benchmark"]["per_radius_radii"],
+        curve=config["benchmark"]["curve_radii"],
+        inverse=config["benchmark"]["inverse_torques"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
     log:
         logfile("benchmark_speed_error"),
@@ -107,6 +110,7 @@ rule benchmark_speed_error:
     shell:
         "python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
         " --nodes {params.nodes} --repeats {params.repeats} --reference-digits {params.digits}"
+        " --per-radius-radii {params.per_radius} --curve-radii {params.curve} --inverse-torques {params.inverse}"
         " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
@@ -180,3 +184,27 @@ rule curve_accuracy:
     shell:
         "python {input.script} --per-panel {params.per_panel} --json {output.json} --macros {output.macros}"
         " > {log} 2>&1"
+
+
+BUILD_BENCHMARK = f"{OUT}/timings/build_benchmark.json"  # written by workflow/checks/benchmark_build.py
+
+
+def build_benchmark(wildcards):
+    """The timing of a clean build of this configuration and of the test suite, if one was measured."""
+    return [BUILD_BENCHMARK] if Path(BUILD_BENCHMARK).is_file() else []
+
+
+rule build_time_table:
+    input:
+        script="workflow/scripts/build_time_table.py",
+        lib=lib("workflow/scripts/build_time_table.py"),
+        benchmark=build_benchmark,
+    output:
+        html=report(f"{OUT}/timings/build_time.html", caption="../report/build_time.rst", category="Build time"),
+    log:
+        logfile("build_time_table"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --benchmark {input.benchmark} --html {output.html} > {log} 2>&1"

@@ -198,6 +198,7 @@ rule precision_ladder:
         script="workflow/scripts/precision_ladder.py",
         lib=lib("workflow/scripts/precision_ladder.py"),
         references=expand(f"{OUT}/verification/abel_fredholm/b{{radius}}.json", radius=PRECISION_RADII),
+        weak=expand(f"{OUT}/verification/reference_{{method}}.json", method=WEAK_FORMS),
     output:
         json=f"{OUT}/verification/precision_ladder.json",
         tex=f"{OUT}/tables/precision_ladder.tex",
@@ -214,7 +215,8 @@ rule precision_ladder:
         runtime=20,
         mem_mb=3000,
     shell:
-        "python {input.script} --references {input.references} --weak-radii {params.weak_radii}"
+        "python {input.script} --references {input.references} --weak-references {input.weak}"
+        " --weak-radii {params.weak_radii}"
         " --weak-n-terms {params.weak_n} --weak-digits {params.weak_digits} --main-radius {params.main}"
         " --json {output.json} --tex {output.tex} --tex-weak {output.weak} --macros {output.macros} > {log} 2>&1"
 

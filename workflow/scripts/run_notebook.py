@@ -7,14 +7,19 @@ metadata is recorded, so the same results give the same files.  Execution errors
 
 import argparse
 import os
+import sys
 from pathlib import Path
 
-import jupytext
-import nbclient
-import nbformat
-from nbconvert import HTMLExporter
+# nbformat validates with jsonschema, which imports the optional rfc3987-syntax when installed and that
+# compiles 38 grammars on import (a second of CPU per notebook) for "iri" formats no notebook schema uses
+sys.modules.setdefault("rfc3987_syntax", None)
 
-from torsional_contact.provenance import write_text
+import jupytext  # noqa: E402 (after the line above)
+import nbclient  # noqa: E402
+import nbformat  # noqa: E402
+from nbconvert import HTMLExporter  # noqa: E402
+
+from torsional_contact.provenance import write_text  # noqa: E402
 
 
 def main():

@@ -46,6 +46,7 @@ solve of a (b, precision, xi-layout) and the per-node xi-functions are cached
 
 from __future__ import annotations
 
+import cmath
 import functools
 import math
 import time
@@ -103,13 +104,25 @@ def chebyshev_points(stick_radius, digits: int) -> int:
     return math.ceil(digits * math.log(10.0) / math.log(rho)) + 8
 
 
-def interface_points(work_digits: int) -> int:
-    """Chebyshev points in u = sqrt(1 - t) on [0, sqrt(1 - b)] for the series of H = bracket/t.
+def _bernstein(point: complex, lo: float, hi: float) -> float:
+    """Bernstein parameter rho of ``point`` for the interval [lo, hi]: Chebyshev series on
+    [lo, hi] of a function singular there converge like rho^-k."""
+    z = (2.0 * point - lo - hi) / (hi - lo)
+    root = cmath.sqrt(z - 1.0) * cmath.sqrt(z + 1.0)
+    return max(abs(z + root), abs(z - root))
 
-    2 per working digit + 10: measured errors of the series against direct evaluation 1e-50
-    at b = 0.02 (the slowest, 49 digits) with 100 points, 3e-46 with 80.
+
+def interface_points(stick_radius, lo: float, hi: float, digits: float) -> int:
+    """Chebyshev points in u = sqrt(1 - t) on [lo, hi] for a 10^-digits series of H = bracket/t.
+
+    H is singular at u = +-i sqrt(1 - b) (t = 2 - b, where the xi-integrals of P and E_b stop
+    converging) and u = +-sqrt(2) (t = -1, E_1); the nearer one's Bernstein parameter sets the
+    count, plus 10.  Measured decay of the coefficients at b = 0.02 (nearest u = sqrt 2, rho = 3.4)
+    and the errors against direct evaluation: 1e-50 with 100 points at 49 digits.
     """
-    return 2 * int(work_digits) + 10
+    b = float(stick_radius)
+    rho = min(_bernstein(point, lo, hi) for point in (complex(0.0, math.sqrt(1.0 - b)), complex(math.sqrt(2.0))))
+    return math.ceil(digits * math.log(10.0) / math.log(rho)) + 10
 
 
 def _chebyshev_coefficients(values) -> list:
@@ -227,22 +240,25 @@ class AbelFredholmState:
         part_a = _entries(a_matrix * _column(self._profile_a))
         total_y = sum(self._profile_y, flint.arb(0))
         two_over_pi = 2 / flint.arb.pi()
-        return [
-            two_over_pi * (pa + t * total_y) + spinning_tail(t, self._tail_start)
+        return [  # the J_k(1 + t) half of the tail is below exp(-X) < 2^-prec (kernels_mp.spinning_tail)
+            two_over_pi * (pa + t * total_y) + spinning_tail(t, self._tail_start, far=False)
             for t, pa in zip(t_points, part_a, strict=True)
         ]
 
     # -- (F6) -----------------------------------------------------------------------------
     @cached_property
     def chebyshev(self) -> tuple:
-        """Coefficients of G = 2 Omega - bracket(t)/t in T_k(x), x = 2 t^2/b^2 - 1 (for F6)."""
+        """Coefficients of G = 2 Omega - bracket(t)/t in T_k(x), x = 2 t^2/b^2 - 1 (for F6).
+
+        G at the Chebyshev points from the series of H = bracket/t on the stick disc (u in
+        [sqrt(1 - b), 1]), which needs fewer rows of A(xi t) than G itself for b near 1.
+        """
         with working_digits(self.work_digits):
             b = self.stick_radius
             x_cheb = chebyshev_nodes(chebyshev_points(float(b), self.work_digits))
-            t_cheb = [b * ((1 + x) / 2).sqrt() for x in x_cheb]
+            u_cheb = [(1 - b * ((1 + x) / 2).sqrt()).sqrt() for x in x_cheb]
             omega2 = 2 * self.rotation_constant
-            big_g = [omega2 - br / tc for br, tc in zip(self._bracket(t_cheb), t_cheb, strict=True)]
-            return tuple(_chebyshev_coefficients(big_g))
+            return tuple(_chebyshev_coefficients([omega2 - h for h in self._stick_series(u_cheb)]))
 
     @cached_property
     def _chebyshev_derivative(self) -> tuple:
@@ -279,28 +295,54 @@ class AbelFredholmState:
             return [+v for v in out]
 
     # -- (F7) ------------------------------------------------------------------------------
-    @cached_property
-    def _slip_series(self) -> tuple:
-        """(sqrt(1 - b), Chebyshev coefficients of H(u) = bracket(1 - u^2)/(1 - u^2) on [0, sqrt(1 - b)]).
+    def _h_series(self, lo, hi) -> tuple:
+        """Chebyshev coefficients of H(u) = bracket(1 - u^2)/(1 - u^2) on [lo, hi] (arb, 0 <= lo < hi <= 1).
 
-        Warns (AccuracyWarning) if the last coefficients do not fall below 10^-work_digits.
+        To the working precision (2^-prec, not only 10^-work_digits: the profile error estimate
+        of ``abel_fredholm_mp`` compares two solves down to their rounding).  The count from
+        ``interface_points``; doubled (at most twice) while the last coefficients exceed 2^(8 - prec)
+        of the largest (their rounding floor is about sqrt(n) 2^-prec), then an AccuracyWarning.
         """
-        with working_digits(self.work_digits):
-            edge = (1 - self.stick_radius).sqrt()
-            u_points = [edge * (1 + x) / 2 for x in chebyshev_nodes(interface_points(self.work_digits))]
-            t_points = [1 - u * u for u in u_points]
+        prec = flint.ctx.prec
+        n = interface_points(float(self.stick_radius), float(lo), float(hi), prec * math.log10(2.0))
+        for attempt in range(3):
+            u_points = [lo + (hi - lo) * (1 + x) / 2 for x in chebyshev_nodes(n)]
+            t_points = [(1 - u) * (1 + u) for u in u_points]
             values = [br / t for br, t in zip(self._bracket(t_points), t_points, strict=True)]
             coefficients = _chebyshev_coefficients(values)
             tail = max(abs(float(c)) for c in coefficients[-4:])
             scale = max(1.0, max(abs(float(c)) for c in coefficients))
-            if tail > 10.0 ** -self.work_digits * scale:
-                warnings.warn(f"stick_radius={float(self.stick_radius)}: the slip series ends at {tail:.1e}, above "
-                              f"10^-{self.work_digits}; the slip may lose digits", AccuracyWarning, stacklevel=3)
-            return edge, tuple(coefficients)
+            if tail <= 2.0 ** (8 - prec) * scale:
+                return tuple(coefficients)
+            if attempt < 2:
+                n *= 2
+        warnings.warn(f"stick_radius={float(self.stick_radius)}: the series of the Nystrom interpolant on "
+                      f"u in [{float(lo):.3g}, {float(hi):.3g}] ends at {tail:.1e}, above 2^{8 - prec}; "
+                      "the profiles may lose digits", AccuracyWarning, stacklevel=3)
+        return tuple(coefficients)
+
+    @cached_property
+    def _slip_zone(self) -> tuple:
+        """(sqrt(1 - b), the series of H on the slip annulus u in [0, sqrt(1 - b)])."""
+        with working_digits(self.work_digits):
+            edge = (1 - self.stick_radius).sqrt()
+            return edge, self._h_series(flint.arb(0), edge)
+
+    @cached_property
+    def _stick_zone(self) -> tuple:
+        """(sqrt(1 - b), the series of H on the stick disc u in [sqrt(1 - b), 1])."""
+        with working_digits(self.work_digits):
+            edge = (1 - self.stick_radius).sqrt()
+            return edge, self._h_series(edge, flint.arb(1))
+
+    def _stick_series(self, u_points) -> list:
+        """H at u in [sqrt(1 - b), 1] from its series (working precision)."""
+        edge, coefficients = self._stick_zone
+        return _chebyshev_values(coefficients, [(2 * u - edge - 1) / (1 - edge) for u in u_points])
 
     def _d_function(self, t_points, psi_points) -> list:
         """D(t) = 2 Omega t - t arcsech(t) - bracket(t) on [b, 1] (F7), t = cos(psi); bracket from its series."""
-        edge, coefficients = self._slip_series
+        edge, coefficients = self._slip_zone
         root2 = flint.arb(2).sqrt()
         x_points = [2 * root2 * (psi / 2).sin() / edge - 1 for psi in psi_points]  # u = sqrt(1 - t) = sqrt2 sin(psi/2)
         series = _chebyshev_values(coefficients, x_points)
