@@ -30,6 +30,7 @@ rule torque_table:
     params:
         radii=config["torque_table"]["stick_radii"],
         n=config["n_terms"],
+    priority: 20  # long: start early (the manuscript waits for every job)
     log:
         logfile("torque_table"),
     resources:
@@ -102,6 +103,7 @@ rule benchmark_speed_error:
         curve=config["benchmark"]["curve_radii"],
         inverse=config["benchmark"]["inverse_torques"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_speed_error"),
     resources:
@@ -129,6 +131,7 @@ rule benchmark_scenes:
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_scenes"),
     resources:
@@ -157,6 +160,7 @@ rule benchmark_histories:
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_histories"),
     resources:

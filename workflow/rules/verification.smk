@@ -14,6 +14,7 @@ rule reference_weak_form:
         radii=config["reference"]["stick_radii"],
         n=config["reference"]["n_terms"],
         digits=config["reference"]["digits"],
+    priority: 50  # at the head of the cross-check and the ladder: start early
     log:
         logfile("reference_{method}"),
     wildcard_constraints:
@@ -36,6 +37,7 @@ rule precision_crosscheck:
     params:
         converged=config["crosscheck"]["converged_n_terms"],
         conditions=config["crosscheck"]["condition_n_terms"],
+    priority: 40  # long: start as soon as its inputs exist
     log:
         logfile("precision_crosscheck"),
     resources:
@@ -53,6 +55,7 @@ rule errata:
     output:
         json=f"{OUT}/errata/errata.json",
         md=f"{OUT}/errata/errata.md",
+    priority: 20  # long: start early
     log:
         logfile("errata"),
     resources:
@@ -112,6 +115,7 @@ rule fem_validation:
     params:
         radii=config["fem_validation"]["stick_radii"],
         levels=config["fem_validation"]["mesh_levels"],
+    priority: 20  # long: start early
     log:
         logfile("fem_validation"),
     resources:
@@ -134,11 +138,11 @@ def reference_groups(radii, jobs):
     """The reference radii in ``jobs`` runs of neighbouring radii of about equal cost.
 
     Neighbours share working precisions (the torque constant, the xi-quadrature's first panels)
-    and one process start-up.  Cost model (relative, from the jobs' timings): 1 + 0.2/(1 - b) per
-    radius, plus 1 per node count of its convergence study.
+    and one process start-up.  Cost model (relative, fitted to the per-radius timings of the
+    jobs): 1 + 0.06/(1 - b) per radius, times 1 + 0.12 per node count of its convergence study.
     """
     def cost(radius):
-        return 1.0 + 0.2 / (1.0 - float(radius)) + len(CONVERGENCE_NODES.get(radius, []))
+        return (1.0 + 0.06 / (1.0 - float(radius))) * (1.0 + 0.12 * len(CONVERGENCE_NODES.get(radius, [])))
 
     jobs = min(jobs, len(radii))
     ordered = sorted(radii, key=float)
@@ -183,6 +187,7 @@ for _index, _radii in enumerate(REFERENCE_GROUPS, start=1):
             radii=" ".join(_radii),
             digits=PRECISION["digits"],
             convergence=convergence_options(_radii),
+        priority: 50  # long and at the head of the precision ladder: start early
         log:
             logfile(f"abel_fredholm_{_index}"),
         resources:
@@ -209,6 +214,7 @@ rule precision_ladder:
         weak_n=PRECISION["weak_n_terms"],
         weak_digits=PRECISION["weak_digits"],
         main=PRECISION["main_radius"],
+    priority: 40  # long: start as soon as its inputs exist
     log:
         logfile("precision_ladder"),
     resources:
