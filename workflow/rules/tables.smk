@@ -94,6 +94,7 @@ rule benchmark_speed_error:
         json=f"{OUT}/data/benchmark_speed_error.json",
         macros=f"{OUT}/macros/benchmark.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         radii=config["benchmark"]["stick_radii"],
         n=config["benchmark"]["n_terms"],
         nodes=config["benchmark"]["nodes"],
@@ -110,7 +111,7 @@ rule benchmark_speed_error:
         runtime=15,
         mem_mb=3000,
     shell:
-        "python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
+        "{params.blas} python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
         " --nodes {params.nodes} --repeats {params.repeats} --reference-digits {params.digits}"
         " --per-radius-radii {params.per_radius} --curve-radii {params.curve} --inverse-torques {params.inverse}"
         " --json {output.json} --macros {output.macros} > {log} 2>&1"
@@ -125,6 +126,7 @@ rule benchmark_scenes:
         tex=f"{OUT}/tables/scenes.tex",
         macros=f"{OUT}/macros/scenes.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         b=config["contours"]["stick_radius"],
         tol=config["contours"]["tolerance"],
         nr=config["contours"]["nr"],
@@ -138,7 +140,7 @@ rule benchmark_scenes:
         runtime=10,
         mem_mb=2000,
     shell:
-        "python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
+        "{params.blas} python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
         " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
@@ -155,6 +157,7 @@ rule benchmark_histories:
         json=f"{OUT}/data/benchmark_histories.json",
         macros=f"{OUT}/macros/benchmark_histories.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         samples=config["benchmark_histories"]["samples"],
         cycles=config["benchmark_histories"]["cycles"],
         points=config["benchmark_histories"]["turning_points"],
@@ -167,7 +170,8 @@ rule benchmark_histories:
         runtime=20,
         mem_mb=3000,
     shell:
-        "python {input.script} --samples {params.samples} --cycles {params.cycles} --turning-points {params.points}"
+        "{params.blas} python {input.script} --samples {params.samples} --cycles {params.cycles}"
+        " --turning-points {params.points}"
         " --repeats {params.repeats} --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
