@@ -30,18 +30,22 @@ toward t = b (scale set by the log singularity of D at t = 0, which matters for 
 Profiles at the cost of a few hundred rows
 ------------------------------------------
 The slip quadrature needs D(t) = 2 Omega t - t arcsech(t) - bracket(t) at thousands of t
-in [b, 1] (about 250 per radius for small b).  Only the bracket is expensive, and it is
-analytic in u = sqrt(1 - t): the xi-integrals of P and E_b converge for Re t < 2 - b, and
-E_1 (nodes below X and the closed-form tail (M4)) is analytic plus sqrt(1 - t) times
-analytic.  So H(u) = bracket(1 - u^2)/(1 - u^2) is expanded once per solve in Chebyshev
-polynomials on u in [0, sqrt(1 - b)] (``interface_points`` values, about 2 per working
-digit; the size of the last coefficients is checked against 10^-digits), the arcsech term
-is added exactly, and the series is summed at all nodes at once (``_chebyshev_values``:
-the monomial form in C at extra precision).  Measured against direct evaluation of the
-bracket at 49-54 working digits: 1e-50 at b = 0.02 and below 1e-52 at b = 0.6, 0.9, 0.98.
-Sums of Chebyshev series (G' for (F6), H for (F7)) use the same C evaluation; the first
-solve of a (b, precision, xi-layout) and the per-node xi-functions are cached
-(``_xi_layer``), so node sweeps and several radii in one process share them.
+in [b, 1] (about 250 per radius for small b), and (F6) G at ``chebyshev_points`` t in [0, b].
+Only the bracket is expensive, and it is analytic in u = sqrt(1 - t): the xi-integrals of P
+and E_b converge for Re t < 2 - b, and E_1 (nodes below X and the closed-form tail (M4)) is
+analytic plus sqrt(1 - t) times analytic.  So H(u) = bracket(1 - u^2)/(1 - u^2) is expanded
+once per solve in Chebyshev polynomials on the slip annulus, u in [0, sqrt(1 - b)], and on the
+stick disc, u in [sqrt(1 - b), 1] (``interface_points``: from the nearest singularity,
+u = +-i sqrt(1 - b) or sqrt 2; the last coefficients must reach the rounding floor, else the
+count is doubled), the arcsech term is added exactly, and the series are summed at all nodes at
+once (``_chebyshev_values``: the monomial form in C at extra precision).  Measured against
+direct rows at 41-54 working digits, b = 0.02 to 0.98: the series agree to the direct
+evaluation's own rounding (about 10^3 ulp) with the counts chosen.  Rows of A(xi t) for the
+profiles use ``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small
+half; the solve keeps the Taylor series and the full tail, so the rounding of T* and omega
+(printed beyond the working precision in node sweeps) does not depend on these shortcuts.
+The per-node xi-functions and the xi-layer of a (b, precision, layout) are cached
+(``_xi_layer``): node sweeps and several radii in one process share them.
 """
 
 from __future__ import annotations
