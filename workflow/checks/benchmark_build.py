@@ -220,16 +220,19 @@ def benchmark_tests(checkout: Path, scratch: Path) -> dict:
     load_before = os.getloadavg()
     wall, cpu, status = timed(["bash", "workflow/test.sh", f"--junitxml={junit}"], checkout, environment(checkout),
                               scratch / "tests.log")
-    files = {}
+    files, slowest = {}, []
     if junit.exists():
         for case in ElementTree.parse(junit).iter("testcase"):
-            name = (case.get("classname") or "").split(".")[0] or "?"
+            slowest.append({"test": f"{case.get('classname')}::{case.get('name')}",
+                            "seconds": float(case.get("time") or 0)})
+            name = ".".join((case.get("classname") or "?").split(".")[:2])  # tests.test_module[.Class]
             row = files.setdefault(name, {"file": name, "tests": 0, "seconds": 0.0})
             row["tests"] += 1
             row["seconds"] += float(case.get("time") or 0.0)
     return {"command": "bash workflow/test.sh", "status": status, "wall_seconds": wall, "cpu_seconds": cpu,
             "load_average_before": load_before[0], "load_average_after": os.getloadavg()[0],
-            "files": sorted(files.values(), key=lambda r: -r["seconds"])}
+            "files": sorted(files.values(), key=lambda r: -r["seconds"]),
+            "slowest": sorted(slowest, key=lambda r: -r["seconds"])[:15]}
 
 
 def median_run(runs: list[dict]) -> dict:
