@@ -30,22 +30,23 @@ toward t = b (scale set by the log singularity of D at t = 0, which matters for 
 Profiles at the cost of a few hundred rows
 ------------------------------------------
 The slip quadrature needs D(t) = 2 Omega t - t arcsech(t) - bracket(t) at thousands of t
-in [b, 1] (about 250 per radius for small b), and (F6) G at ``chebyshev_points`` t in [0, b].
-Only the bracket is expensive, and it is analytic in u = sqrt(1 - t): the xi-integrals of P
-and E_b converge for Re t < 2 - b, and E_1 (nodes below X and the closed-form tail (M4)) is
-analytic plus sqrt(1 - t) times analytic.  So H(u) = bracket(1 - u^2)/(1 - u^2) is expanded
-once per solve in Chebyshev polynomials on the slip annulus, u in [0, sqrt(1 - b)], and on the
-stick disc, u in [sqrt(1 - b), 1] (``interface_points``: from the nearest singularity,
-u = +-i sqrt(1 - b) or sqrt 2; the last coefficients must reach the rounding floor, else the
-count is doubled), the arcsech term is added exactly, and the series are summed at all nodes at
-once (``_chebyshev_values``: the monomial form in C at extra precision).  Measured against
-direct rows at 41-54 working digits, b = 0.02 to 0.98: the series agree to the direct
-evaluation's own rounding (about 10^3 ulp) with the counts chosen.  Rows of A(xi t) for the
-profiles use ``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small
-half; the solve keeps the Taylor series and the full tail, so the rounding of T* and omega
-(printed beyond the working precision in node sweeps) does not depend on these shortcuts.
-The per-node xi-functions and the xi-layer of a (b, precision, layout) are cached
-(``_xi_layer``): node sweeps and several radii in one process share them.
+in [b, 1] (about 250 per radius for small b).  Only the bracket is expensive, and it is
+analytic in u = sqrt(1 - t): the xi-integrals of P and E_b converge for Re t < 2 - b, and
+E_1 (nodes below X and the closed-form tail (M4)) is analytic plus sqrt(1 - t) times
+analytic.  So H(u) = bracket(1 - u^2)/(1 - u^2) is expanded once per solve in Chebyshev
+polynomials on the slip annulus, u in [0, sqrt(1 - b)] (``interface_points``: from the
+nearest singularity, u = +-i sqrt(1 - b) or sqrt 2; the last coefficients must reach the
+rounding floor, else the count is doubled), the arcsech term is added exactly, and the series
+is summed at all nodes at once (``_chebyshev_values``: the monomial form in C at extra
+precision).  Measured against direct rows at 41-54 working digits, b = 0.02 to 0.98: the
+series agrees to the direct evaluation's own rounding (about 10^3 ulp).  G for (F6) stays
+sampled by rows (``chebyshev_points`` of them), its transform consistent with the rounded
+nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
+``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small half; the
+solve keeps the Taylor series and the full tail, so the rounding of T* and omega (printed
+beyond the working precision in node sweeps) does not depend on these shortcuts.  The
+per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``_xi_layer``):
+node sweeps and several radii in one process share them.
 """
 
 from __future__ import annotations
@@ -129,16 +130,24 @@ def interface_points(stick_radius, lo: float, hi: float, digits: float) -> int:
     return math.ceil(digits * math.log(10.0) / math.log(rho)) + 10
 
 
-def _chebyshev_coefficients(values) -> list:
+def _chebyshev_coefficients(values, angles=None) -> list:
     """Coefficients c_k of sum_k c_k T_k(x) through values at x_j = cos(pi (j + 1/2)/n) (arb).
 
-    The cosines cos(pi k (2j + 1)/(2n)) take only 4n values: one table, then a product in C.
+    Without ``angles``: the cosines cos(pi k (2j + 1)/(2n)) take only 4n values, one table, then a
+    product in C; consistent with the nodes to about k ulp.  With ``angles`` (the rounded
+    theta_j at which the values were taken, x_j = cos(theta_j)): cos(k theta_j) entry by entry,
+    consistent with the actual nodes to an ulp, for a series that is then differentiated (the
+    k-ulp inconsistency, times k^2 in the derivative, made the traction's error estimate 2-12
+    times larger).
     """
     n = len(values)
-    pi = flint.arb.pi()
-    table = [(pi * m / (2 * n)).cos() for m in range(4 * n)]
-    cosines = flint.arb_mat(n, n, [table[(k * (2 * j + 1)) % (4 * n)] for k in range(n) for j in range(n)])
-    coefficients = [2 * c / n for c in _entries(cosines * _column(values))]
+    if angles is None:
+        pi = flint.arb.pi()
+        table = [(pi * m / (2 * n)).cos() for m in range(4 * n)]
+        entries = [table[(k * (2 * j + 1)) % (4 * n)] for k in range(n) for j in range(n)]
+    else:
+        entries = [(k * a).cos() for k in range(n) for a in angles]
+    coefficients = [2 * c / n for c in _entries(flint.arb_mat(n, n, entries) * _column(values))]
     coefficients[0] = coefficients[0] / 2
     return coefficients
 
@@ -254,15 +263,19 @@ class AbelFredholmState:
     def chebyshev(self) -> tuple:
         """Coefficients of G = 2 Omega - bracket(t)/t in T_k(x), x = 2 t^2/b^2 - 1 (for F6).
 
-        G at the Chebyshev points from the series of H = bracket/t on the stick disc (u in
-        [sqrt(1 - b), 1]), which needs fewer rows of A(xi t) than G itself for b near 1.
+        G at the Chebyshev points by rows of A(xi t) (a series of H on the stick disc would
+        need as many rows over the precision ladder), transformed consistently with the
+        rounded nodes (``_chebyshev_coefficients`` with angles): (F6) differentiates the series.
         """
         with working_digits(self.work_digits):
             b = self.stick_radius
-            x_cheb = chebyshev_nodes(chebyshev_points(float(b), self.work_digits))
-            u_cheb = [(1 - b * ((1 + x) / 2).sqrt()).sqrt() for x in x_cheb]
+            n = chebyshev_points(float(b), self.work_digits)
+            pi = flint.arb.pi()
+            angles = [pi * (2 * j + 1) / (2 * n) for j in range(n)]
+            t_cheb = [b * ((1 + a.cos()) / 2).sqrt() for a in angles]
             omega2 = 2 * self.rotation_constant
-            return tuple(_chebyshev_coefficients([omega2 - h for h in self._stick_series(u_cheb)]))
+            values = [omega2 - br / tc for br, tc in zip(self._bracket(t_cheb), t_cheb, strict=True)]
+            return tuple(_chebyshev_coefficients(values, angles))
 
     @cached_property
     def _chebyshev_derivative(self) -> tuple:
@@ -331,18 +344,6 @@ class AbelFredholmState:
         with working_digits(self.work_digits):
             edge = (1 - self.stick_radius).sqrt()
             return edge, self._h_series(flint.arb(0), edge)
-
-    @cached_property
-    def _stick_zone(self) -> tuple:
-        """(sqrt(1 - b), the series of H on the stick disc u in [sqrt(1 - b), 1])."""
-        with working_digits(self.work_digits):
-            edge = (1 - self.stick_radius).sqrt()
-            return edge, self._h_series(edge, flint.arb(1))
-
-    def _stick_series(self, u_points) -> list:
-        """H at u in [sqrt(1 - b), 1] from its series (working precision)."""
-        edge, coefficients = self._stick_zone
-        return _chebyshev_values(coefficients, [(2 * u - edge - 1) / (1 - edge) for u in u_points])
 
     def _d_function(self, t_points, psi_points) -> list:
         """D(t) = 2 Omega t - t arcsech(t) - bracket(t) on [b, 1] (F7), t = cos(psi); bracket from its series."""
