@@ -9,6 +9,7 @@ at 20-25 digits.
 """
 
 import math
+from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -29,12 +30,13 @@ from tolerances import (  # noqa: E402 (after the skip)
 
 from torsional_contact import solve  # noqa: E402 (after the skip)
 from torsional_contact.io.cli import main as cli_main  # noqa: E402 (after the skip)
-from torsional_contact.verification import kernels_mp, special_mp  # noqa: E402 (after the skip)
+from torsional_contact.verification import kernels_mp, nystrom_mp, special_mp  # noqa: E402 (after the skip)
 from torsional_contact.verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm  # noqa: E402 (after the skip)
 from torsional_contact.verification.arbitrary_precision import arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
 from torsional_contact.verification.nystrom_mp import nodes_for_digits, solve_state  # noqa: E402 (after the skip)
 
 REFERENCE_RADII = ("0.1", "0.3", "0.5", "0.6", "0.7", "0.9")
+ROOT = Path(__file__).resolve().parents[1]
 
 
 @pytest.fixture(scope="module")
@@ -204,7 +206,7 @@ def test_double_precision_solve_within_1e13(references):
 
 def test_traction_near_slip_onset_at_two_precisions():
     """b = 0.97 needs 125-150 Chebyshev terms for (F6): the series is summed without loss
-    (two working precisions agree; ball arithmetic in Clenshaw's recurrence lost 9 digits
+    (two working precisions agree; a Clenshaw recurrence in ball arithmetic lost 9 digits
     here) and matches the double-precision solver."""
     radii = ["0.1", "0.5", "0.9", "0.969"]
     values = []
@@ -227,6 +229,108 @@ def test_precision_is_restored():
         assert mpmath.mp.dps == 17 and flint.ctx.prec == 77
     finally:
         flint.ctx.prec = 53
+
+
+# -- the profiles: series of the Nystrom interpolant -------------------------------------
+
+
+def test_chebyshev_sums_and_coefficients_against_mpmath():
+    """``_chebyshev_values`` sums 300 terms (monomial coefficients up to (1 + sqrt 2)^300, hence its
+    extra precision) as mpmath's sum of c_k cos(k arccos x) does, near both ends too; and
+    ``_chebyshev_coefficients`` (a table of 4n cosines, or cosines entry by entry at given angles)
+    inverts the sum at the nodes.
+    Tolerance 10^-28 at 30 digits: 2^-110 = 8e-34 per operation over a few hundred terms of size
+    <= 1 (measured 4e-34 and 1e-32)."""
+    rng = np.random.default_rng(7)
+    with working_digits(30):
+        coefficients = [mp_to_arb(mpmath.mpf(float(v)) / (k + 1)) for k, v in enumerate(rng.standard_normal(300))]
+        points = [flint.arb(x).mid() for x in ("-0.9999", "-0.3", "0.25", "0.999999")]
+        values = nystrom_mp._chebyshev_values(coefficients, points)
+        with mpmath.workdps(45):
+            for x, value in zip(points, values, strict=True):
+                angle = mpmath.acos(_mp(x))
+                exact = mpmath.fsum(_mp(c) * mpmath.cos(k * angle) for k, c in enumerate(coefficients))
+                assert abs(_mp(value) - exact) < mpmath.mpf(10) ** -28
+        head = coefficients[:48]
+        back = nystrom_mp._chebyshev_coefficients(nystrom_mp._chebyshev_values(head, nystrom_mp.chebyshev_nodes(48)))
+        assert max(abs(_mp(a) - _mp(c)) for a, c in zip(head, back, strict=True)) < mpmath.mpf(10) ** -28
+        angles = [flint.arb.pi() * (2 * j + 1) / 96 for j in range(48)]  # the entry-by-entry transform
+        nodes = [a.cos() for a in angles]
+        back = nystrom_mp._chebyshev_coefficients(nystrom_mp._chebyshev_values(head, nodes), angles)
+        assert max(abs(_mp(a) - _mp(c)) for a, c in zip(head, back, strict=True)) < mpmath.mpf(10) ** -28
+
+
+@pytest.mark.parametrize("b", ["0.05", "0.6", "0.97"])
+def test_interpolant_series_against_direct_rows(b):
+    """H(u) = bracket(1 - u^2)/(1 - u^2) from its series on the slip annulus (and, as a harder case
+    of the same code, on the stick disc u in [sqrt(1 - b), 1], where the series would cross t = 0)
+    against rows of A(xi t) evaluated directly, at points off the Chebyshev nodes (the ends
+    included): the difference is at the direct evaluation's rounding, up to 10^4 ulp near u = 0
+    where the xi-sum cancels (measured up to 6e-25 at 25 digits, 2^-94 = 5e-29, over b = 0.05 to
+    0.97 and three seeds); tolerance 10^-23."""
+    state = solve_state(b, nodes_for_digits(float(b), 20), 25)
+    rng = np.random.default_rng(3)
+    with working_digits(25):
+        edge, slip = state._slip_zone
+        stick = state._h_series(edge, flint.arb(1))
+        for lo, hi, coefficients in ((flint.arb(0), edge, slip), (edge, flint.arb(1), stick)):
+            fractions = [0.0005, *rng.uniform(0.0, 1.0, 5), 0.9995]
+            u = [lo + (hi - lo) * flint.arb(f) for f in fractions]
+            t = [(1 - v) * (1 + v) for v in u]
+            direct = [br / tv for br, tv in zip(state._bracket(t), t, strict=True)]
+            series = nystrom_mp._chebyshev_values(coefficients, [(2 * v - lo - hi) / (hi - lo) for v in u])
+            assert max(abs(_mp(a) - _mp(c)) for a, c in zip(direct, series, strict=True)) < mpmath.mpf(10) ** -23
+
+
+def test_fast_sinh_excess_and_short_tail_within_rounding():
+    """The profiles' shortcuts: A(x) = sinh(x) - x with the cancelled bits added back equals the
+    Taylor series to a few ulp (tolerance 10^-28 relative at 30 digits, 2^-110 = 8e-34 per
+    operation; measured 6e-33), at tiny, small and large products; the E_1 tail without its
+    J_k(1 + t) half differs by less than exp(-X), the bound in ``spinning_tail``'s docstring
+    (measured 8e-46 against 2e-42)."""
+    with working_digits(30):
+        xi = [flint.arb(x).mid() for x in ("1e-12", "3e-4", "0.01", "0.2", "0.7", "3", "40")]
+        points = [flint.arb(t).mid() for t in ("0.001", "0.37", "1")]
+        series = special_mp.sinh_excess_matrix(points, xi)
+        cancel = special_mp.sinh_excess_matrix(points, xi, method="cancel")
+        for i in range(len(points)):
+            for k in range(len(xi)):
+                exact, fast = _mp(series[i, k]), _mp(cancel[i, k])
+                assert abs(fast - exact) <= mpmath.mpf(10) ** -28 * abs(exact)
+        start = kernels_mp.xi_quadrature(0.5, 30).asymptotic_start
+        for t in points:
+            full, short = kernels_mp.spinning_tail(t, start), kernels_mp.spinning_tail(t, start, far=False)
+            assert abs(_mp(full) - _mp(short)) < mpmath.exp(-start)
+    with pytest.raises(ValueError, match="method"):
+        special_mp.sinh_excess_matrix(points, xi, method="taylor")
+
+
+def test_several_radii_in_one_job_give_the_files_of_single_jobs(tmp_path):
+    """The workflow script with two stick radii (the higher working precision first, and a node
+    sweep) writes the same files as one process per radius: the caches shared between radii
+    (xi-functions per node, torque constant, Gauss rules) change no digit."""
+    import json
+    import subprocess
+    import sys
+
+    script = ROOT / "workflow" / "scripts" / "reference_abel_fredholm.py"
+
+    def run(radii, folder):
+        """JSON records (without metadata) written by one process for ``radii``."""
+        folder.mkdir()
+        sweep = ["--convergence", "0.9:8,12", "--convergence-digits", "12", "16"] if "0.9" in radii else []
+        subprocess.run([sys.executable, str(script), "--stick-radii", *radii, "--digits", "12", *sweep,
+                        "--json", *[str(folder / f"b{r}.json") for r in radii]], check=True, capture_output=True,
+                       cwd=ROOT)
+        records = {r: json.loads((folder / f"b{r}.json").read_text()) for r in radii}
+        for record in records.values():
+            record.pop("metadata")
+        return records
+
+    together = run(["0.9", "0.3"], tmp_path / "together")
+    alone = {**run(["0.9"], tmp_path / "alone_0.9"), **run(["0.3"], tmp_path / "alone_0.3")}
+    assert together == alone
+    assert len(together["0.9"]["convergence"]) == 4
 
 
 # -- physical identities at high precision ---------------------------------------------

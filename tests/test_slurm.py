@@ -6,6 +6,7 @@ comparison of two builds (workflow/cluster/compare_builds.py) is checked here on
 for the purpose.
 """
 
+import fnmatch
 import importlib.util
 import json
 import os
@@ -37,12 +38,29 @@ compare_builds = _load_compare_builds()
 
 
 def rule_blocks():
-    """{rule name: its text} for every rule of the workflow."""
+    """{rule name: its text} for every rule of the workflow.
+
+    A rule defined in a loop (``rule:`` with a ``name:`` directive, e.g. one job per group of
+    stick radii) is listed under its name pattern, its f-string fields as ``*``
+    (``reference_abel_fredholm_*``).
+    """
     blocks = {}
     for path in RULE_FILES:
-        parts = re.split(r"^rule (\w+):\n", path.read_text(), flags=re.M)
-        blocks.update(zip(parts[1::2], parts[2::2], strict=True))
+        parts = re.split(r"^[ ]*rule(?: (\w+))?:\n", path.read_text(), flags=re.M)
+        for name, text in zip(parts[1::2], parts[2::2], strict=True):
+            if name is None:
+                directive = re.search(r"^\s+name:\n\s+f?\"([^\"]+)\"", text, re.M)
+                assert directive, f"a rule without a name in {path}"
+                name = re.sub(r"\{[^}]*\}", "*", directive.group(1))
+            blocks[name] = text
     return blocks
+
+
+def rule_of(job_rule: str, names) -> str:
+    """The rule name or loop pattern of ``rule_blocks`` that a planned job's rule belongs to."""
+    matches = [name for name in names if fnmatch.fnmatchcase(job_rule, name)]
+    assert len(matches) == 1, (job_rule, matches)
+    return matches[0]
 
 
 def test_profile_settings():
@@ -62,7 +80,7 @@ def test_every_rule_declares_resources_and_paper_is_local():
     assert len(blocks) >= 15
     for name, text in blocks.items():
         if name != "all":  # no command: never submitted
-            assert re.search(r"^    resources:\n        runtime=\d+,\n        mem_mb=\d+,", text, re.M), name
+            assert re.search(r"^( +)resources:\n\1    runtime=\d+,\n\1    mem_mb=\d+,", text, re.M), name
     localrules = re.search(r"^localrules:\n((?:    \w+,\n)+)", (ROOT / "workflow/rules/paper.smk").read_text(), re.M)
     assert localrules and {"paper", "build_macros"} <= set(re.findall(r"\w+", localrules.group(1)))
 
@@ -80,7 +98,8 @@ def test_dry_run_with_the_slurm_profile_plans_every_rule(tmp_path):
     assert run.returncode == 0, out[-3000:]
     table = re.search(r"Job stats:\n(.*?)\n\n", out, re.S)
     planned = {row.split()[0] for row in table.group(1).splitlines()[2:] if row.strip()} - {"total"}
-    assert planned == set(rule_blocks())
+    blocks = rule_blocks()
+    assert {rule_of(rule, blocks) for rule in planned} == set(blocks)
     resources = re.findall(r"^    resources: (.*)$", out, re.M)
     assert resources and all("slurm_partition=probe_partition" in r for r in resources)  # from the env var
     assert not any("cpus_per_task" in r for r in resources)

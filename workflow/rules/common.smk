@@ -24,6 +24,11 @@ def fig(name, caption, category="Figures"):
     return {"pdf": f"{OUT}/figures/{name}.pdf", "png": png}
 
 
+#: For the timing benchmarks, which hold both cores (``threads: 2``) so that no other job disturbs
+#: them: Snakemake sets the BLAS thread variables to a job's threads, and the benchmarks time one.
+ONE_BLAS_THREAD = "OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1"
+
+
 def logfile(name):
     """The log file of one job (stdout and stderr of its script)."""
     return f"{OUT}/logs/{name}.log"

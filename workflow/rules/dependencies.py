@@ -5,6 +5,7 @@ sources with ``ast`` only; imports nothing from the package.
 """
 
 import ast
+import functools
 from pathlib import Path
 
 SRC = Path("src")
@@ -26,6 +27,7 @@ def _dotted(path):
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+@functools.cache
 def _lazy_exports():
     """name -> submodule of the package's lazy ``__init__`` (its _EXPORTS table)."""
     tree = ast.parse((SRC / PACKAGE / "__init__.py").read_text())
@@ -37,7 +39,35 @@ def _lazy_exports():
     return {}
 
 
+@functools.cache
+def _imports_cached(path):
+    return frozenset(_imports_uncached(path))
+
+
 def _imports(path):
+    """Dotted package modules one file imports (cached per file: each is parsed once per process)."""
+    return set(_imports_cached(Path(path)))
+
+
+_BLOCKS = ast.stmt | ast.excepthandler | ast.match_case
+
+
+def _import_statements(body):
+    """Import statements at any depth of a statement list (functions, classes, if/try/with blocks).
+
+    Imports are statements: only statement lists are visited, not the far more numerous
+    expression nodes (``ast.walk`` would visit those too).
+    """
+    for node in body:
+        if isinstance(node, ast.Import | ast.ImportFrom):
+            yield node
+            continue
+        for _, block in ast.iter_fields(node):  # body, orelse, finalbody, handlers, cases
+            if isinstance(block, list) and block and isinstance(block[0], _BLOCKS):
+                yield from _import_statements(block)
+
+
+def _imports_uncached(path):
     """Dotted package modules one file imports (absolute or relative), with what they pull in."""
     path = Path(path)
     tree = ast.parse(path.read_text())
@@ -45,7 +75,7 @@ def _imports(path):
     here = _dotted(path) if inside else ""
     package = here if path.name == "__init__.py" else here.rpartition(".")[0]
     found = set()
-    for node in ast.walk(tree):
+    for node in _import_statements(tree.body):
         if isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] == PACKAGE)
             continue
@@ -71,7 +101,17 @@ def _imports(path):
     return found
 
 
+@functools.cache
+def _library_files_cached(script):
+    return tuple(_library_files(script))
+
+
 def library_files(script):
+    """Library files a workflow script depends on: the transitive closure of its imports (a new list)."""
+    return list(_library_files_cached(str(script)))
+
+
+def _library_files(script):
     """Library files a workflow script depends on: the transitive closure of its imports.
 
     Importing a.b.c runs the __init__ of a and a.b first, so those are included too.

@@ -30,6 +30,7 @@ rule torque_table:
     params:
         radii=config["torque_table"]["stick_radii"],
         n=config["n_terms"],
+    priority: 20  # long: start early (the manuscript waits for every job)
     log:
         logfile("torque_table"),
     resources:
@@ -93,20 +94,26 @@ rule benchmark_speed_error:
         json=f"{OUT}/data/benchmark_speed_error.json",
         macros=f"{OUT}/macros/benchmark.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         radii=config["benchmark"]["stick_radii"],
         n=config["benchmark"]["n_terms"],
         nodes=config["benchmark"]["nodes"],
         repeats=config["benchmark"]["repeats"],
         digits=config["benchmark"]["reference_digits"],
+        per_radius=config["benchmark"]["per_radius_radii"],
+        curve=config["benchmark"]["curve_radii"],
+        inverse=config["benchmark"]["inverse_torques"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_speed_error"),
     resources:
         runtime=15,
         mem_mb=3000,
     shell:
-        "python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
+        "{params.blas} python {input.script} --stick-radius {params.radii} --n-terms {params.n}"
         " --nodes {params.nodes} --repeats {params.repeats} --reference-digits {params.digits}"
+        " --per-radius-radii {params.per_radius} --curve-radii {params.curve} --inverse-torques {params.inverse}"
         " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
@@ -119,19 +126,21 @@ rule benchmark_scenes:
         tex=f"{OUT}/tables/scenes.tex",
         macros=f"{OUT}/macros/scenes.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         b=config["contours"]["stick_radius"],
         tol=config["contours"]["tolerance"],
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_scenes"),
     resources:
         runtime=10,
         mem_mb=2000,
     shell:
-        "python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
+        "{params.blas} python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
         " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
@@ -148,6 +157,7 @@ rule benchmark_histories:
         json=f"{OUT}/data/benchmark_histories.json",
         macros=f"{OUT}/macros/benchmark_histories.tex",
     params:
+        blas=ONE_BLAS_THREAD,
         samples=config["benchmark_histories"]["samples"],
         cycles=config["benchmark_histories"]["cycles"],
         reversals=config["benchmark_histories"]["walk_reversals"],
@@ -155,15 +165,16 @@ rule benchmark_histories:
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
+    priority: 100  # first, while nothing else runs (it needs both cores)
     log:
         logfile("benchmark_histories"),
     resources:
         runtime=20,
         mem_mb=1000,
     shell:
-        "python {input.script} --samples {params.samples} --cycles {params.cycles} --walk-reversals {params.reversals}"
-        " --seed {params.seed} --turning-points {params.points} --repeats {params.repeats} --json {output.json}"
-        " --macros {output.macros} > {log} 2>&1"
+        "{params.blas} python {input.script} --samples {params.samples} --cycles {params.cycles}"
+        " --walk-reversals {params.reversals} --seed {params.seed} --turning-points {params.points}"
+        " --repeats {params.repeats} --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
 rule curve_accuracy:
@@ -183,3 +194,27 @@ rule curve_accuracy:
     shell:
         "python {input.script} --per-panel {params.per_panel} --json {output.json} --macros {output.macros}"
         " > {log} 2>&1"
+
+
+BUILD_BENCHMARK = f"{OUT}/timings/build_benchmark.json"  # written by workflow/checks/benchmark_build.py
+
+
+def build_benchmark(wildcards):
+    """The timing of a clean build of this configuration and of the test suite, if one was measured."""
+    return [BUILD_BENCHMARK] if Path(BUILD_BENCHMARK).is_file() else []
+
+
+rule build_time_table:
+    input:
+        script="workflow/scripts/build_time_table.py",
+        lib=lib("workflow/scripts/build_time_table.py"),
+        benchmark=build_benchmark,
+    output:
+        html=report(f"{OUT}/timings/build_time.html", caption="../report/build_time.rst", category="Build time"),
+    log:
+        logfile("build_time_table"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --benchmark {input.benchmark} --html {output.html} > {log} 2>&1"

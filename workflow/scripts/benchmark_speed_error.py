@@ -72,29 +72,31 @@ def reference_sweep(b, digits_list, n_terms, exact_torque, exact_omega):
     """
     rows = []
     for digits in digits_list:
-        timing = interleaved({"reference": lambda d=digits: reference.solve_reference(repr(b), "complete", n_terms, d)},
-                             1)["reference"]
-        solution = reference.solve_reference(repr(b), "complete", n_terms, digits)
+        solutions = []  # the timed call's result is the one reported (it takes seconds: not solved twice)
+        timing = interleaved({"reference": lambda d=digits, out=solutions: out.append(
+            reference.solve_reference(repr(b), "complete", n_terms, d))}, 1)["reference"]
+        solution = solutions[-1]
         rows.append({"method": "reference", "resolution": digits, "n_terms": n_terms, "seconds": timing.median,
                      "timing": timing.as_dict(), "torque_error": abs(float(solution.torque) - exact_torque),
                      "omega_error": abs(float(solution.rigid_rotation) - exact_omega), "traction_error": None})
     return rows
 
 
-def targets(rounds):
-    """Per-radius time over b in [0.02, 0.98]; a curve of 200 radii against the complete weak form at
-    N = 145 (interleaved); the inverse problem (stick radius for a torque) and its torque residual."""
-    radii = np.linspace(0.02, 0.98, 49)
-    per_radius = interleaved({f"{b:.2f}": (lambda b=b: solve_fast(b)) for b in radii}, rounds)
-    medians = np.array([per_radius[f"{b:.2f}"].median for b in radii])
-    curve = np.linspace(0.005, 0.995, 200)
+def targets(rounds, n_radii=49, n_curve=200, n_torques=17):
+    """Per-radius time over ``n_radii`` b in [0.02, 0.98]; a curve of ``n_curve`` radii against the
+    complete weak form at N = 145 (interleaved); the inverse problem (stick radius for each of
+    ``n_torques`` torques) and its torque residual."""
+    radii = np.linspace(0.02, 0.98, n_radii)
+    per_radius = interleaved({f"{b:.4f}": (lambda b=b: solve_fast(b)) for b in radii}, rounds)
+    medians = np.array([per_radius[f"{b:.4f}"].median for b in radii])
+    curve = np.linspace(0.005, 0.995, n_curve)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", TorsionalContactWarning)
         curves = interleaved({"fast": lambda: [solve_fast(b).torque for b in curve],
                               "complete145": lambda: [solve_series(b, "complete", 145).torque for b in curve]},
                              3, budget=30.0)
     solve(torque=1.2)  # the first inverse solve of a process may build tables; the steady state is timed here
-    torques = np.linspace(1.01, 1.33, 17)
+    torques = np.linspace(1.01, 1.33, n_torques)
     inverse = interleaved({f"{t:.2f}": (lambda t=t: solve(torque=t)) for t in torques}, rounds)
     errors = [abs(solve_fast(solve(torque=t).stick_radius).torque - t) for t in torques]
     return {
@@ -133,6 +135,9 @@ def main():
     p.add_argument("--nodes", type=int, nargs="+", default=[6, 10, 14, 18, 24, 32])
     p.add_argument("--repeats", type=int, default=7, help="interleaved rounds")
     p.add_argument("--reference-digits", type=int, nargs="*", default=[20, 30, 50])
+    p.add_argument("--per-radius-radii", type=int, default=49, help="stick radii in [0.02, 0.98] timed one by one")
+    p.add_argument("--curve-radii", type=int, default=200, help="stick radii of the timed T*(b) curve")
+    p.add_argument("--inverse-torques", type=int, default=17, help="torques in [1.01, 1.33] of the inverse solve")
     p.add_argument("--json", help="JSON file (written atomically)")
     p.add_argument("--macros", help="LaTeX macros of the quoted numbers")
     a = p.parse_args()
@@ -147,7 +152,7 @@ def main():
                                               result["reference_rigid_rotation"])
         print(_format(result), flush=True)
         results.append(result)
-    goals = targets(a.repeats)
+    goals = targets(a.repeats, a.per_radius_radii, a.curve_radii, a.inverse_torques)
     print(goals)
     host = machine()
     if a.json:
@@ -178,6 +183,7 @@ def main():
             "bench-fast-ratio-high": format_ratio(fast_default["time_ratio_vs_complete145"]["q75"]),
             "bench-per-radius-max": _latex_seconds(goals["per_radius"]["max"]),
             "bench-curve-ratio": format_ratio(curve["ratio"]["median"]),
+            "bench-curve-radii": a.curve_radii,
             "bench-curve-time": _latex_seconds(curve["fast"]["median"]),
             "bench-inverse-time": _latex_seconds(goals["inverse"]["median"]),
             "bench-inverse-error": sci(max(goals["inverse"]["max_torque_error"], 1e-16), 0),

@@ -1,20 +1,27 @@
 """Execute one notebook (jupytext percent source) on the build's results; write .ipynb and HTML.
 
 The notebook runs in notebooks/ with RESULTS_DIR pointing at the build's output folder
-(relative, so no absolute path ends up in the outputs); cell ids are numbered and no timing
-metadata is recorded, so the same results give the same files.  Execution errors fail the job.
+(relative, so no absolute path ends up in the outputs); cell ids are numbered, no timing
+metadata is recorded and consecutive prints form one output (the kernel's flushes split them
+depending on timing), so the same results give the same files.  Execution errors fail the job.
 """
 
 import argparse
 import os
+import sys
 from pathlib import Path
 
-import jupytext
-import nbclient
-import nbformat
-from nbconvert import HTMLExporter
+# nbformat validates with jsonschema, which imports the optional rfc3987-syntax when installed and that
+# compiles 38 grammars on import (a second of CPU per notebook) for "iri" formats no notebook schema uses
+sys.modules.setdefault("rfc3987_syntax", None)
 
-from torsional_contact.provenance import write_text
+import jupytext  # noqa: E402 (after the line above)
+import nbclient  # noqa: E402
+import nbformat  # noqa: E402
+from nbconvert import HTMLExporter  # noqa: E402
+from nbconvert.preprocessors import CoalesceStreamsPreprocessor  # noqa: E402
+
+from torsional_contact.provenance import write_text  # noqa: E402
 
 
 def main():
@@ -35,6 +42,8 @@ def main():
     client = nbclient.NotebookClient(notebook, kernel_name="python3", timeout=a.timeout, record_timing=False,
                                      resources={"metadata": {"path": str(workdir)}})
     client.execute()
+    # one stream output per run of prints: how the kernel's flushes split them depends on timing
+    notebook, _ = CoalesceStreamsPreprocessor().preprocess(notebook, {})
     for cell in notebook.cells:  # execution counts and ids are deterministic; drop the execution timestamps
         cell.get("metadata", {}).pop("execution", None)
     write_text(a.ipynb, nbformat.writes(notebook))

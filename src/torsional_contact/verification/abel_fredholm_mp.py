@@ -19,9 +19,10 @@ errors decay geometrically, the difference bounds the error of the coarser solve
 overestimates that of the finer one.  ``profile_error_estimate`` does the same for the
 traction and slip at given radii (absolute, f p0 and f p0 a / mu).
 
-Timing on the 2-core development machine, 30 digits, both solves (median of 3, warm): 1.8 s,
-2.4 s, 3.6 s, 7.3 s at b = 0.1, 0.6, 0.9, 0.98; the command line, cold, 3.3-4.7 s at the first three;
-100 digits at b = 0.6: 25 s (error estimate 1.5e-112).
+The profiles cost a few hundred rows of the Nystrom interpolant per solve (``nystrom_mp``: series
+of it on the stick disc and the slip annulus), whatever the number of radii.  Times: each workflow
+job records its solves' wall and CPU seconds (``timings/abel_fredholm/``), and
+workflow/checks/benchmark_build.py the reference jobs' share of a clean build.
 """
 
 from __future__ import annotations

@@ -26,17 +26,42 @@ G branches at t = 1 with L and E_1, x = 2/b^2 - 1).  (F7) is integrated over v,
 psi = arccos(t) = psi_r + v^2 (which removes the inverse square root at t = r), on panels
 graded geometrically toward v = 0 (scale sqrt(2 psi_r), the zero of sin(psi + psi_r)) and
 toward t = b (scale set by the log singularity of D at t = 0, which matters for small b).
+
+Profiles at the cost of a few hundred rows
+------------------------------------------
+The slip quadrature needs D(t) = 2 Omega t - t arcsech(t) - bracket(t) at thousands of t
+in [b, 1] (about 250 per radius for small b).  Only the bracket is expensive, and it is
+analytic in u = sqrt(1 - t): the xi-integrals of P and E_b converge for Re t < 2 - b, and
+E_1 (nodes below X and the closed-form tail (M4)) is analytic plus sqrt(1 - t) times
+analytic.  So H(u) = bracket(1 - u^2)/(1 - u^2) is expanded once per solve in Chebyshev
+polynomials on the slip annulus, u in [0, sqrt(1 - b)] (``interface_points``: from the
+nearest singularity, u = +-i sqrt(1 - b) or sqrt 2; the last coefficients must reach the
+rounding floor, else the count is doubled), the arcsech term is added exactly, and the series
+is summed at all nodes at once (``_chebyshev_values``: the monomial form in C at extra
+precision).  Measured against direct rows at 41-54 working digits, b = 0.02 to 0.98: the
+series agrees to the direct evaluation's own rounding (about 10^3 ulp).  G for (F6) stays
+sampled by rows (``chebyshev_points`` of them), its transform consistent with the rounded
+nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
+``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small half; the
+solve keeps the Taylor series and the full tail, so the rounding of T* and omega (printed
+beyond the working precision in node sweeps) does not depend on these shortcuts.  The
+per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``_xi_layer``):
+node sweeps and several radii in one process share them.
 """
 
 from __future__ import annotations
 
+import cmath
+import functools
 import math
 import time
+import warnings
 from dataclasses import dataclass, field
 from functools import cached_property
 
 import flint
 
+from ..diagnostics import AccuracyWarning
 from .arbitrary_precision import gauss_legendre, mp_to_arb, parse_decimal, working_digits
 from .kernels_mp import (
     FIRST_PANEL,
@@ -49,7 +74,7 @@ from .kernels_mp import (
 )
 from .special_mp import bessel_ratio, sinh_excess_matrix
 
-__all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "solve_state"]
+__all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "interface_points", "solve_state"]
 
 
 def _bernstein_log(b: float, singular_t_over_b: float) -> float:
@@ -82,6 +107,79 @@ def chebyshev_points(stick_radius, digits: int) -> int:
     x_s = 2.0 / (b * b) - 1.0
     rho = x_s + math.sqrt(x_s * x_s - 1.0)
     return math.ceil(digits * math.log(10.0) / math.log(rho)) + 8
+
+
+def _bernstein(point: complex, lo: float, hi: float) -> float:
+    """Bernstein parameter rho of ``point`` for the interval [lo, hi]: Chebyshev series on
+    [lo, hi] of a function singular there converge like rho^-k."""
+    z = (2.0 * point - lo - hi) / (hi - lo)
+    root = cmath.sqrt(z - 1.0) * cmath.sqrt(z + 1.0)
+    return max(abs(z + root), abs(z - root))
+
+
+def interface_points(stick_radius, lo: float, hi: float, digits: float) -> int:
+    """Chebyshev points in u = sqrt(1 - t) on [lo, hi] for a 10^-digits series of H = bracket/t.
+
+    H is singular at u = +-i sqrt(1 - b) (t = 2 - b, where the xi-integrals of P and E_b stop
+    converging) and u = +-sqrt(2) (t = -1, E_1); the nearer one's Bernstein parameter sets the
+    count, plus 10.  Measured decay of the coefficients at b = 0.02 (nearest u = sqrt 2, rho = 3.4)
+    and the errors against direct evaluation: 1e-50 with 100 points at 49 digits.
+    """
+    b = float(stick_radius)
+    rho = min(_bernstein(point, lo, hi) for point in (complex(0.0, math.sqrt(1.0 - b)), complex(math.sqrt(2.0))))
+    return math.ceil(digits * math.log(10.0) / math.log(rho)) + 10
+
+
+def _chebyshev_coefficients(values, angles=None) -> list:
+    """Coefficients c_k of sum_k c_k T_k(x) through values at x_j = cos(pi (j + 1/2)/n) (arb).
+
+    Without ``angles``: the cosines cos(pi k (2j + 1)/(2n)) take only 4n values, one table, then a
+    product in C; consistent with the nodes to about k ulp.  With ``angles`` (the rounded
+    theta_j at which the values were taken, x_j = cos(theta_j)): cos(k theta_j) entry by entry,
+    consistent with the actual nodes to an ulp, for a series that is then differentiated (the
+    k-ulp inconsistency, times k^2 in the derivative, made the traction's error estimate 2-12
+    times larger).
+    """
+    n = len(values)
+    if angles is None:
+        pi = flint.arb.pi()
+        table = [(pi * m / (2 * n)).cos() for m in range(4 * n)]
+        entries = [table[(k * (2 * j + 1)) % (4 * n)] for k in range(n) for j in range(n)]
+    else:
+        entries = [(k * a).cos() for k in range(n) for a in angles]
+    coefficients = [2 * c / n for c in _entries(flint.arb_mat(n, n, entries) * _column(values))]
+    coefficients[0] = coefficients[0] / 2
+    return coefficients
+
+
+def chebyshev_nodes(n: int) -> list:
+    """x_j = cos(pi (j + 1/2)/n), j < n (arb, working precision): the nodes of ``_chebyshev_coefficients``."""
+    pi = flint.arb.pi()
+    return [(pi * (2 * j + 1) / (2 * n)).cos() for j in range(n)]
+
+
+def _chebyshev_values(coefficients, x_points) -> list:
+    """sum_k c_k T_k(x) at many x in [-1, 1] (arb list, working precision).
+
+    The series (coefficients rounded to their midpoints) is converted to the monomial basis by
+    Clenshaw's recurrence in polynomial arithmetic and summed by Horner's rule in C, both with
+    log2(1 + sqrt 2) bits per term more than the working precision: the monomial coefficients
+    grow like (1 + sqrt 2)^k, and Arb's balls bound the cancellation.  The points are taken
+    at their midpoints (as the Clenshaw sum of the derivative series did).
+    """
+    prec = flint.ctx.prec
+    extra = math.ceil(len(coefficients) * math.log2(1.0 + math.sqrt(2.0))) + 16
+    flint.ctx.prec = prec + extra
+    try:
+        x = flint.arb_poly([0, 1])
+        b1, b2 = flint.arb_poly([]), flint.arb_poly([])
+        for c in reversed(coefficients[1:]):
+            b1, b2 = 2 * x * b1 - b2 + c.mid(), b1
+        polynomial = x * b1 - b2 + coefficients[0].mid()
+        values = polynomial.evaluate([p.mid() for p in x_points], algorithm="iter")
+    finally:
+        flint.ctx.prec = prec
+    return [+v for v in values]
 
 
 def _position(r, b) -> int:
@@ -127,9 +225,10 @@ class AbelFredholmState:
     nodes, weights, density : tuple of arb
         t_j = b cos(theta_j), weights for int_0^b dt, g(t_j) (F2).
     chebyshev : tuple of arb
-        Coefficients of G = g + L in T_k(2 t^2/b^2 - 1) (for F6).
+        Coefficients of G = g + L in T_k(2 t^2/b^2 - 1) (for F6); computed on first use.
     seconds : float
-        Wall-clock time of the solve.
+        Wall-clock time of the solve (T*, omega and the Nystrom interpolant; not the series
+        of the profiles, which are computed when a profile is first asked for).
     """
 
     stick_radius: object
@@ -141,7 +240,6 @@ class AbelFredholmState:
     nodes: tuple = field(repr=False)
     weights: tuple = field(repr=False)
     density: tuple = field(repr=False)
-    chebyshev: tuple = field(repr=False)
     seconds: float = 0.0
     _xi: tuple = field(repr=False, default=())
     _profile_a: tuple = field(repr=False, default=())
@@ -151,57 +249,111 @@ class AbelFredholmState:
     # -- the Nystrom interpolant --------------------------------------------------------
     def _bracket(self, t_points) -> list:
         """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7)."""
-        a_matrix = sinh_excess_matrix(t_points, self._xi)
+        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel")
         part_a = _entries(a_matrix * _column(self._profile_a))
         total_y = sum(self._profile_y, flint.arb(0))
         two_over_pi = 2 / flint.arb.pi()
-        return [
-            two_over_pi * (pa + t * total_y) + spinning_tail(t, self._tail_start)
+        return [  # the J_k(1 + t) half of the tail is below exp(-X) < 2^-prec (kernels_mp.spinning_tail)
+            two_over_pi * (pa + t * total_y) + spinning_tail(t, self._tail_start, far=False)
             for t, pa in zip(t_points, part_a, strict=True)
         ]
 
-    def _d_function(self, t_points) -> list:
-        """D(t) = 2 Omega t - t arcsech(t) - [R(t) + (2/pi) int s g P ds] on [b, 1] (F7)."""
-        bracket = self._bracket(t_points)
-        omega2 = 2 * self.rotation_constant
-        return [omega2 * t - t * _arcsech(t) - br for t, br in zip(t_points, bracket, strict=True)]
-
     # -- (F6) -----------------------------------------------------------------------------
     @cached_property
+    def chebyshev(self) -> tuple:
+        """Coefficients of G = 2 Omega - bracket(t)/t in T_k(x), x = 2 t^2/b^2 - 1 (for F6).
+
+        G at the Chebyshev points by rows of A(xi t) (a series of H on the stick disc would
+        need as many rows over the precision ladder), transformed consistently with the
+        rounded nodes (``_chebyshev_coefficients`` with angles): (F6) differentiates the series.
+        """
+        with working_digits(self.work_digits):
+            b = self.stick_radius
+            n = chebyshev_points(float(b), self.work_digits)
+            pi = flint.arb.pi()
+            angles = [pi * (2 * j + 1) / (2 * n) for j in range(n)]
+            t_cheb = [b * ((1 + a.cos()) / 2).sqrt() for a in angles]
+            omega2 = 2 * self.rotation_constant
+            values = [omega2 - br / tc for br, tc in zip(self._bracket(t_cheb), t_cheb, strict=True)]
+            return tuple(_chebyshev_coefficients(values, angles))
+
+    @cached_property
     def _chebyshev_derivative(self) -> tuple:
-        c = list(self.chebyshev)
-        n = len(c)
-        d = [flint.arb(0)] * (n + 1)
-        for k in range(n - 1, 0, -1):
-            d[k - 1] = (d[k + 1] + 2 * k * c[k]).mid()
-        d[0] = d[0] / 2
-        return tuple(v.mid() for v in d[: n - 1])
+        with working_digits(self.work_digits):
+            c = list(self.chebyshev)
+            n = len(c)
+            d = [flint.arb(0)] * (n + 1)
+            for k in range(n - 1, 0, -1):
+                d[k - 1] = (d[k + 1] + 2 * k * c[k]).mid()
+            d[0] = d[0] / 2
+            return tuple(v.mid() for v in d[: n - 1])
 
     def traction_arb(self, radii) -> list:
         """sigma_zt(r, 0)/(f p0) at exact radii in [0, 1] (arb list), eq. (F6); 1 for r >= b."""
+        derivative = self._chebyshev_derivative
         with working_digits(self.work_digits):
             b = self.stick_radius
-            derivative = self._chebyshev_derivative
             m = len(derivative) + 2
             y_nodes, y_weights = gauss_legendre(m)
             edge_factor = (1 - b * b).sqrt()
-            out = []
-            for r in radii:
-                if _position(r, b) >= 0:
-                    out.append(flint.arb(1))
-                    continue
-                height = ((b - r) * (b + r)).sqrt()
+            inside = [(index, r) for index, r in enumerate(radii) if _position(r, b) < 0]
+            heights = [((b - r) * (b + r)).sqrt() for _, r in inside]
+            x_points = [2 * (r * r + (height * (yj + 1) / 2) ** 2) / (b * b) - 1
+                        for (_, r), height in zip(inside, heights, strict=True) for yj in y_nodes]
+            values = _chebyshev_values(derivative, x_points) if x_points else []
+            out = [flint.arb(1)] * len(radii)
+            for position, ((index, r), height) in enumerate(zip(inside, heights, strict=True)):
                 total = flint.arb(0)
-                for yj, wj in zip(y_nodes, y_weights, strict=True):
-                    y = height * (yj + 1) / 2
-                    x = (2 * (r * r + y * y) / (b * b) - 1).mid()
-                    total += wj * _clenshaw(derivative, x)
+                for wj, value in zip(y_weights, values[position * m:(position + 1) * m], strict=True):
+                    total += wj * value
                 integral = height * total / 2
                 edge = 2 * flint.arb.atan2(r * edge_factor, height) / flint.arb.pi()
-                out.append(edge - 8 * r * integral / (flint.arb.pi() * b * b))
+                out[index] = edge - 8 * r * integral / (flint.arb.pi() * b * b)
             return [+v for v in out]
 
     # -- (F7) ------------------------------------------------------------------------------
+    def _h_series(self, lo, hi) -> tuple:
+        """Chebyshev coefficients of H(u) = bracket(1 - u^2)/(1 - u^2) on [lo, hi] (arb, 0 <= lo < hi <= 1).
+
+        To the working precision (2^-prec, not only 10^-work_digits: the profile error estimate
+        of ``abel_fredholm_mp`` compares two solves down to their rounding).  The count from
+        ``interface_points``; doubled (at most twice) while the last coefficients exceed 2^(8 - prec)
+        of the largest (their rounding floor is about sqrt(n) 2^-prec), then an AccuracyWarning.
+        """
+        prec = flint.ctx.prec
+        n = interface_points(float(self.stick_radius), float(lo), float(hi), prec * math.log10(2.0))
+        for attempt in range(3):
+            u_points = [lo + (hi - lo) * (1 + x) / 2 for x in chebyshev_nodes(n)]
+            t_points = [(1 - u) * (1 + u) for u in u_points]
+            values = [br / t for br, t in zip(self._bracket(t_points), t_points, strict=True)]
+            coefficients = _chebyshev_coefficients(values)
+            tail = max(abs(float(c)) for c in coefficients[-4:])
+            scale = max(1.0, max(abs(float(c)) for c in coefficients))
+            if tail <= 2.0 ** (8 - prec) * scale:
+                return tuple(coefficients)
+            if attempt < 2:
+                n *= 2
+        warnings.warn(f"stick_radius={float(self.stick_radius)}: the series of the Nystrom interpolant on "
+                      f"u in [{float(lo):.3g}, {float(hi):.3g}] ends at {tail:.1e}, above 2^{8 - prec}; "
+                      "the profiles may lose digits", AccuracyWarning, stacklevel=3)
+        return tuple(coefficients)
+
+    @cached_property
+    def _slip_zone(self) -> tuple:
+        """(sqrt(1 - b), the series of H on the slip annulus u in [0, sqrt(1 - b)])."""
+        with working_digits(self.work_digits):
+            edge = (1 - self.stick_radius).sqrt()
+            return edge, self._h_series(flint.arb(0), edge)
+
+    def _d_function(self, t_points, psi_points) -> list:
+        """D(t) = 2 Omega t - t arcsech(t) - bracket(t) on [b, 1] (F7), t = cos(psi); bracket from its series."""
+        edge, coefficients = self._slip_zone
+        root2 = flint.arb(2).sqrt()
+        x_points = [2 * root2 * (psi / 2).sin() / edge - 1 for psi in psi_points]  # u = sqrt(1 - t) = sqrt2 sin(psi/2)
+        series = _chebyshev_values(coefficients, x_points)
+        omega2 = 2 * self.rotation_constant
+        return [t * (omega2 - _arcsech(t) - h) for t, h in zip(t_points, series, strict=True)]
+
     def slip_arb(self, radii) -> list:
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu at exact radii in [0, 1], eq. (F7)."""
         with working_digits(self.work_digits):
@@ -210,7 +362,7 @@ class AbelFredholmState:
             half_pi = flint.arb.pi() / 2
             m = panel_nodes(self.work_digits)
             x_nodes, x_weights = gauss_legendre(m)
-            t_all, w_all, owner = [], [], []
+            t_all, psi_all, w_all, owner = [], [], [], []
             for index, r in enumerate(radii):
                 if _position(r, b) <= 0:
                     continue
@@ -227,11 +379,12 @@ class AbelFredholmState:
                         s_psi, c_psi = psi.sin(), psi.cos()
                         factor = 2 * v * c_psi * s_psi / ((v * v).sin() * (2 * psi_r + v * v).sin()).sqrt()
                         t_all.append(c_psi)
+                        psi_all.append(psi)
                         w_all.append(half * wj * factor)
                         owner.append(index)
             sums = [flint.arb(0)] * len(radii)
             if t_all:
-                values = self._d_function(t_all)
+                values = self._d_function(t_all, psi_all)
                 for k, w, dv in zip(owner, w_all, values, strict=True):
                     sums[k] += w * dv
             two_over_pi = 2 / flint.arb.pi()
@@ -256,21 +409,59 @@ def _graded_panels(length: float, left_scale: float, right_scale: float, exact_l
     return list(zip(edges[:-1], edges[1:], strict=True))
 
 
-def _clenshaw(coefficients, x):
-    """sum_k c_k T_k(x) in midpoint arithmetic (exact arb coefficients and x).
+#: Per-node xi-functions (rho = K2/I2 and the c = 1 load profiles), keyed by precision and node:
+#: the xi-quadratures of different stick radii share their first panels.
+_NODE_CACHE: dict = {}
+_NODE_CACHE_LIMIT = 200_000
 
-    Each step is rounded to an exact midpoint: in ball arithmetic the recurrence inflates
-    the radii like (1 + sqrt 2)^k and Arb then drops midpoint precision (measured: 1e-30
-    instead of 1e-42 at 40 digits with 50 terms, O(1) errors with 290 terms at b = 0.98).
-    The rounding error of Clenshaw's recurrence itself is O(k^2) ulps; the error estimate
-    of ``solve_reference_abel_fredholm`` covers it.
-    """
-    b1 = flint.arb(0)
-    b2 = flint.arb(0)
-    two_x = (2 * x).mid()
-    for c in reversed(coefficients[1:]):
-        b1, b2 = (two_x * b1 - b2 + c).mid(), b1
-    return x * b1 - b2 + coefficients[0]
+
+def _per_node(kind: str, function, xi) -> list:
+    """``function(nodes)`` (elementwise, deterministic) for the nodes ``xi``, computed once per node and precision."""
+    if len(_NODE_CACHE) > _NODE_CACHE_LIMIT:
+        _NODE_CACHE.clear()
+    prec = flint.ctx.prec
+    keys = [(kind, prec, *(int(v) for v in x.man_exp())) for x in xi]
+    missing = [k for k, key in enumerate(keys) if key not in _NODE_CACHE]
+    if missing:
+        for k, value in zip(missing, function([xi[k] for k in missing]), strict=True):
+            _NODE_CACHE[keys[k]] = value
+    return [_NODE_CACHE[key] for key in keys]
+
+
+@dataclass(frozen=True)
+class _XiLayer:
+    """What a solve needs of the xi-quadrature, independent of the Nystrom nodes (``_xi_layer``)."""
+
+    xi: tuple
+    scale: tuple
+    side_full: tuple
+    side_excess: tuple
+    tail_start: float
+
+
+@functools.lru_cache(maxsize=8)
+def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
+    b = flint.arb(b_key)
+    quadrature = xi_quadrature(float(1 - b), work_digits, first_panel, width_decays)
+    xi = quadrature.nodes
+    scale = [w * r for w, r in zip(quadrature.weights, _per_node("ratio", bessel_ratio, xi), strict=True)]
+    below = quadrature.n_below
+    profiles_1 = _per_node("load_1", lambda nodes: list(zip(*load_profiles(flint.arb(1), nodes), strict=True)),
+                           xi[:below])
+    full_1, excess_1 = [f for f, _ in profiles_1], [e for _, e in profiles_1]
+    full_b, excess_b = load_profiles(b, xi)
+    zero = flint.arb(0)
+    side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
+    side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
+    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
+
+
+def _xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
+    """xi-nodes, weights times K2/I2, and the load profiles F(xi)/xi^2 - F(b xi)/xi^2 (and the
+    excess forms) of one (b, working precision, layout): shared by the solves of a node sweep."""
+    man, exp = b.mid().man_exp()
+    return _xi_layer_cached((int(man), int(exp)), flint.ctx.prec, int(work_digits), float(first_panel),
+                            float(width_decays))
 
 
 def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: float = FIRST_PANEL,
@@ -300,31 +491,28 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         theta = [pi / 4 * (x + 1) for x in theta_x]
         t = [b * th.cos() for th in theta]
         wt = [b * th.sin() * pi / 4 * w for th, w in zip(theta, theta_w, strict=True)]
-        quadrature = xi_quadrature(float(1 - b), work_digits, first_panel, width_decays)
-        xi = quadrature.nodes
-        scale = [w * r for w, r in zip(quadrature.weights, bessel_ratio(xi), strict=True)]
-        below = quadrature.n_below
-        full_1, excess_1 = load_profiles(flint.arb(1), xi[:below])
-        full_b, excess_b = load_profiles(b, xi)
+        layer = _xi_layer(b, work_digits, first_panel, width_decays)
+        xi, scale, side_full, side_excess = layer.xi, layer.scale, layer.side_full, layer.side_excess
         zero = flint.arb(0)
-        side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
-        side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
 
         # A(xi_k t_i) at the nodes and at t = b; weighted transpose for the products
         points = t + [b]
         a_points = sinh_excess_matrix(points, xi)
-        weighted = flint.arb_mat(len(xi), n, [scale[k] * a_points[j, k] for k in range(len(xi)) for j in range(n)])
+        a_entries = a_points.entries()  # row-major: A(xi_k t_j) at j * len(xi) + k
+        n_xi = len(xi)
+        weighted = flint.arb_mat(n_xi, n, [scale[k] * a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
         moment_row = _row(xi) * weighted  # sum_k scale_k xi_k A(xi_k t_j)
         moment_nodes = [moment_row[0, j] for j in range(n)]
         moment_points = _entries(a_points * _column(s * x for s, x in zip(scale, xi, strict=True)))
         product = a_points * weighted
         side_a = _entries(a_points * _column(s * f for s, f in zip(scale, side_full, strict=True)))
         side_y = sum((s * x * e for s, x, e in zip(scale, xi, side_excess, strict=True)), zero)
-        tail_start = quadrature.asymptotic_start
+        tail_start = layer.tail_start
         r_side = [two_over_pi * (sa + p * side_y) + spinning_tail(p, tail_start)
                   for p, sa in zip(points, side_a, strict=True)]
         # P(t_i, t_j) for i < n and the edge row i = n (t = b)
-        kernel = [[two_over_pi * (product[i, j] + moment_points[i] * t[j] + points[i] * moment_nodes[j])
+        product_entries = product.entries()
+        kernel = [[two_over_pi * (product_entries[i * n + j] + moment_points[i] * t[j] + points[i] * moment_nodes[j])
                    for j in range(n)] for i in range(n + 1)]
         column = [w * tj for w, tj in zip(wt, t, strict=True)]
         matrix = flint.arb_mat(n, n, [(1 if i == j else 0) + two_over_pi * kernel[i][j] / t[i] * column[j]
@@ -345,32 +533,16 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
 
         # xi-profiles of the interpolant: bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail
         weights_g = [c * g for c, g in zip(column, density, strict=True)]
-        sum_a = _entries(flint.arb_mat(len(xi), n, [a_points[j, k] for k in range(len(xi)) for j in range(n)])
+        sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
                          * _column(weights_g))
         sum_c = sum((c * tj for c, tj in zip(weights_g, t, strict=True)), zero)
         profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
                           for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
         profile_y = tuple(s * x * (two_over_pi * sa + e)
                           for s, x, sa, e in zip(scale, xi, sum_a, side_excess, strict=True))
-        state = AbelFredholmState(
-            stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
-            rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-            chebyshev=(), _xi=xi, _profile_a=profile_a, _profile_y=profile_y, _tail_start=tail_start,
-        )
-        # Chebyshev series of G = 2 Omega - bracket(t)/t in x = 2 t^2/b^2 - 1 (for F6)
-        n_cheb = chebyshev_points(float(b), work_digits)
-        angles = [pi * (j + flint.arb(1) / 2) / n_cheb for j in range(n_cheb)]
-        x_cheb = [a.cos() for a in angles]
-        t_cheb = [b * ((1 + x) / 2).sqrt() for x in x_cheb]
-        big_g = [2 * omega_big - br / tc for br, tc in zip(state._bracket(t_cheb), t_cheb, strict=True)]
-        cosines = flint.arb_mat(n_cheb, n_cheb, [(k * a).cos() for k in range(n_cheb) for a in angles])
-        coefficients = _entries(cosines * _column(big_g))
-        coefficients = [2 * c / n_cheb for c in coefficients]
-        coefficients[0] = coefficients[0] / 2
-    seconds = time.perf_counter() - start
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-        chebyshev=tuple(coefficients), seconds=seconds, _xi=xi, _profile_a=profile_a, _profile_y=profile_y,
+        seconds=time.perf_counter() - start, _xi=xi, _profile_a=profile_a, _profile_y=profile_y,
         _tail_start=tail_start,
     )

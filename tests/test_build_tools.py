@@ -1,0 +1,132 @@
+"""The workflow's build tools: the dependency analysis of the rules, the build benchmark's job timing
+and the build-time table of the report.
+
+``workflow/rules/dependencies.py`` visits only statement lists (imports are statements): checked
+against a walk over every node of the syntax tree, for every workflow script, notebook and library
+module, and on a module that hides imports in nested blocks.  ``workflow/checks/benchmark_build.py``
+times each job through a shell wrapper: checked on a real process with a known CPU load.
+"""
+
+import ast
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _load(path: Path, name: str):
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+dependencies = _load(ROOT / "workflow" / "rules" / "dependencies.py", "dependencies")
+benchmark_build = _load(ROOT / "workflow" / "checks" / "benchmark_build.py", "benchmark_build")
+build_time_table = _load(ROOT / "workflow" / "scripts" / "build_time_table.py", "build_time_table")
+
+
+def _all_import_nodes(path):
+    """Every Import/ImportFrom node of a file, by a walk over the whole tree (the reference)."""
+    return sorted(ast.dump(node) for node in ast.walk(ast.parse(Path(path).read_text()))
+                  if isinstance(node, ast.Import | ast.ImportFrom))
+
+
+def test_statement_walk_finds_every_import_of_every_source(monkeypatch):
+    monkeypatch.chdir(ROOT)
+    files = sorted([*ROOT.glob("workflow/scripts/*.py"), *ROOT.glob("notebooks/*.py"),
+                    *ROOT.glob("src/torsional_contact/**/*.py")])
+    assert len(files) > 100
+    for path in files:
+        found = sorted(ast.dump(node) for node in dependencies._import_statements(ast.parse(path.read_text()).body))
+        assert found == _all_import_nodes(path), path
+
+
+def test_imports_in_nested_blocks_are_dependencies(tmp_path, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    script = tmp_path / "nested.py"
+    script.write_text(
+        "class A:\n"
+        "    def f(self, x):\n"
+        "        try:\n"
+        "            import torsional_contact.fields\n"
+        "        except ImportError:\n"
+        "            from torsional_contact.histories import memory\n"
+        "        finally:\n"
+        "            pass\n"
+        "        match x:\n"
+        "            case 1:\n"
+        "                from torsional_contact.typeset import sci\n"
+        "        with open(x) as h:\n"
+        "            if h:\n"
+        "                from torsional_contact import provenance\n"
+    )
+    files = dependencies.library_files(str(script))
+    for module in ("fields.py", "histories/memory.py", "typeset.py", "provenance.py", "__init__.py"):
+        assert f"src/torsional_contact/{module}" in files, module
+    assert files == dependencies.library_files(str(script))  # cached: the same list, a new copy
+    assert files is not dependencies.library_files(str(script))
+
+
+def test_times_fields_and_records(tmp_path):
+    assert benchmark_build._seconds("0m0.250s") == pytest.approx(0.25)
+    assert benchmark_build._seconds("2m3.500s") == pytest.approx(123.5)
+    (tmp_path / "1.rec").write_text("python\n/ck/results/logs/a.log\n100.0\n102.5\n0m0.010s 0m0.002s\n"
+                                    "1m1.000s 0m0.500s\n")
+    (record,) = benchmark_build.read_records(tmp_path, Path("/ck"))
+    assert record["log"] == "results/logs/a.log" and record["wall_seconds"] == pytest.approx(2.5)
+    assert record["cpu_seconds"] == pytest.approx(61.512)
+    rows = benchmark_build.aggregate([{"rule": "r", "wall_seconds": 1.0, "cpu_seconds": 2.0},
+                                      {"rule": "r", "wall_seconds": 3.0, "cpu_seconds": 1.0},
+                                      {"rule": "s", "wall_seconds": 9.0, "cpu_seconds": 0.5}])
+    assert rows[0] == {"rule": "r", "jobs": 2, "wall_seconds": 4.0, "cpu_seconds": 3.0, "longest_job_seconds": 3.0}
+    assert rows[1]["rule"] == "s"
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="the wrapper reads /proc/<pid>/fd/1")
+def test_job_wrapper_records_the_cpu_time_of_the_job_and_its_log(tmp_path):
+    """A job that burns about 0.3 CPU-s in a child process, output sent to its log: the wrapper
+    records that log and at least that CPU time (bash's ``times`` counts waited-for children)."""
+    records, shims = tmp_path / "records", tmp_path / "bin"
+    records.mkdir()
+    benchmark_build.make_shims(shims, records, os.environ["PATH"] + os.pathsep + str(Path(sys.executable).parent))
+    burn = ("import subprocess, sys, time; subprocess.run([sys.executable, '-c', "
+            "'import time\\nt = time.process_time()\\nwhile time.process_time() - t < 0.3: pass'])")
+    log = tmp_path / "logs" / "job.log"
+    log.parent.mkdir()
+    env = dict(os.environ, PATH=f"{shims}{os.pathsep}{os.environ['PATH']}")
+    subprocess.run(f'python -c "{burn}" > {log} 2>&1', shell=True, check=True, env=env, cwd=tmp_path)
+    (record,) = benchmark_build.read_records(records, tmp_path)
+    assert record["log"] == "logs/job.log" and record["program"] == "python"
+    assert 0.3 <= record["cpu_seconds"] < 0.3 + 5.0  # plus two interpreter start-ups
+    assert record["wall_seconds"] >= 0.3 * 0.5  # a shared machine: wall is not below the CPU of one core
+
+
+def test_rules_of_logs_from_snakemake_metadata(tmp_path):
+    metadata = tmp_path / ".snakemake" / "metadata"
+    metadata.mkdir(parents=True)
+    (metadata / "a").write_text(json.dumps({"rule": "fig", "log": ["results/logs/fig.log"], "endtime": 20.0}))
+    (metadata / "b").write_text(json.dumps({"rule": "old", "log": ["results/logs/old.log"], "endtime": 5.0}))
+    (metadata / "c").write_text("not json")
+    assert benchmark_build.rules_of_logs(tmp_path, since=10.0) == {"results/logs/fig.log": "fig"}
+
+
+def test_build_time_table_with_and_without_a_measurement():
+    assert "was not timed" in build_time_table.render(None)
+    build = {"configfile": "config/test.yaml", "wall_seconds_median": 40.0, "cpu_seconds_median": 70.0,
+             "repeats": 1, "load_average_before": 0.5, "snakemake_cpu_seconds": 3.0,
+             "rules": [{"rule": "paper", "jobs": 1, "wall_seconds": 2.0, "cpu_seconds": 1.5,
+                        "longest_job_seconds": 2.0}]}
+    tests = {"wall_seconds_median": 150.0, "cpu_seconds_median": 300.0, "repeats": 1, "status": 0,
+             "files": [{"file": "tests", "tests": 10, "seconds": 20.0}]}
+    page = build_time_table.render({"cores": 2, "this": {"build": build, "tests": tests},
+                                    "baseline": {"build": {**build, "rules": []}}, "baseline_checkout": "/old",
+                                    "ratios": {"build_cpu": 2.0}})
+    for text in ("40 s wall, 70 CPU-s", "150 s wall, 300 CPU-s", "<td>paper</td>", "baseline", "build_cpu 2.00"):
+        assert text in page, text
