@@ -3,10 +3,14 @@
 For each scenario (a synthetic rig from the exact solution, ``torsional_contact.fitting.synthetic``:
 torque- or twist-controlled, an amplitude, white noise on both channels) the noise-free record is
 made once and ``--draws`` noisy copies are fitted with ``fit_loop`` (noise levels estimated from
-each record, as a user's would be).  Per parameter: the fraction of draws whose interval holds the
-truth (with its binomial standard error), the median relative error, and how often the fit reports
-the parameter at all (stick: no friction value, only a lower bound; G unresolved: only a lower
-bound, counted as covering when the bound lies below the truth).
+each record, as a user's would be).  For each parameter every draw ends in one of three ways: an
+interval (the parameter is identified: a value and both ends from the data), a bound (not
+identified: what the data do say, one end open or set by the model's bound on kappa), or nothing.
+Per scenario and parameter the table gives how often each happened, the coverage of the reported
+intervals and bounds (a bound covers when the truth lies within it) with its binomial standard
+error, and, over the identified draws, the median relative bias of the value and the median
+relative width of the interval.  For a loop in stick the rate at which slip is detected is the
+slip test's false-alarm rate (its level is 5 %).
 
 Units: torque N m, twist rad, friction 1, G Pa, compliance rad / (N m).  Output: a JSON data file
 with provenance, the LaTeX table (results/tables/) and macros (results/macros/).
@@ -26,6 +30,43 @@ from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, t
 from torsional_contact.provenance import latex_escape, write_json, write_macros, write_text
 from torsional_contact.typeset import sci
 
+PARAMETERS = (("friction", "f"), ("shear_modulus", "G"), ("compliance", "C"))
+CONFIDENCE = 0.95
+
+
+def binomial_stderr(successes: int, trials: int) -> float:
+    """Standard error of a rate from ``successes`` in ``trials`` (the rate smoothed to (k + 1) / (n + 2), so that 0 and
+    n successes do not claim an error of 0)."""
+    p = (successes + 1) / (trials + 2)
+    return math.sqrt(p * (1 - p) / trials)
+
+
+def outcome(estimate, truth: float) -> dict:
+    """What one fit reported about one parameter: "interval", "bound" or "none", whether it covers, error, width."""
+    lo, hi = estimate.interval
+    if lo is None and hi is None:
+        return {"status": "none"}
+    covered = (lo is None or lo <= truth) and (hi is None or truth <= hi)
+    if not estimate.identified:
+        return {"status": "bound", "covered": covered}
+    return {"status": "interval", "covered": covered, "error": (estimate.value - truth) / truth,
+            "width": (hi - lo) / truth}
+
+
+def summary(outcomes, draws: int) -> dict:
+    counts = {s: sum(o["status"] == s for o in outcomes) for s in ("interval", "bound", "none")}
+    reported = [o for o in outcomes if o["status"] != "none"]
+    identified = [o for o in outcomes if o["status"] == "interval"]
+    out = {"interval": counts["interval"] / draws, "bound": counts["bound"] / draws, "none": counts["none"] / draws}
+    for name, group in (("coverage", reported), ("identified_coverage", identified)):
+        covered = sum(o["covered"] for o in group)
+        out[name] = covered / len(group) if group else None
+        out[name + "_stderr"] = binomial_stderr(covered, len(group)) if group else None
+        out[name + "_count"] = len(group)
+    out["median_bias"] = float(np.median([o["error"] for o in identified])) if identified else None
+    out["median_width"] = float(np.median([o["width"] for o in identified])) if identified else None
+    return out
+
 
 def scenario_record(rig, scenario, draws, cycles, samples_per_cycle, rng):
     if scenario["control"] == "torque":
@@ -34,71 +75,70 @@ def scenario_record(rig, scenario, draws, cycles, samples_per_cycle, rng):
         torque, twist = twist_controlled(rig, scenario["amplitude"], cycles, samples_per_cycle)
     torque_noise = scenario["torque_noise"] * float(np.ptp(torque))
     truth = {"friction": rig.friction, "shear_modulus": rig.shear_modulus, "compliance": rig.compliance}
-    tallies = {key: {"reported": 0, "bounded": 0, "covered": 0, "errors": []} for key in truth}
-    regimes, bounds, flagged, started = {}, [], 0, time.process_time()
+    outcomes = {key: [] for key in truth}
+    slips, started = 0, time.process_time()
     for _ in range(draws):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", NoiseLimitedFitWarning)  # counted below, from the result
             fit = fit_loop(*noisy(torque, twist, torque_noise, scenario["twist_noise"], rng), radius=rig.radius,
-                           normal_force=rig.normal_force)
-        flagged += int(fit.noise_limited)
-        regimes[fit.regime] = regimes.get(fit.regime, 0) + 1
-        if fit.friction.lower_bound is not None:
-            bounds.append(fit.friction.lower_bound)
+                           normal_force=rig.normal_force, confidence=CONFIDENCE)
+        slips += int(fit.slip_detected)
         for key, true in truth.items():
-            estimate = getattr(fit, key)
-            tally = tallies[key]
-            lo, hi = estimate.interval
-            if estimate.value is not None:
-                tally["reported"] += 1
-                tally["errors"].append((estimate.value - true) / true)
-            if lo is not None:  # an interval or a lower bound
-                tally["bounded"] += 1
-                tally["covered"] += int(lo <= true and (hi is None or true <= hi))
+            outcomes[key].append(outcome(getattr(fit, key), true))
+    cpu = time.process_time() - started
     out = {"name": scenario["name"], "control": scenario["control"], "amplitude": scenario["amplitude"],
            "torque_noise": torque_noise, "torque_noise_fraction": scenario["torque_noise"],
            "twist_noise": scenario["twist_noise"],
            "max_torque_ratio": float(np.max(np.abs(torque)) / rig.slip_torque), "draws": draws,
-           "regimes": regimes, "noise_limited": flagged / draws,
-           "friction_lower_bound_median": float(np.median(bounds)) if bounds else None}
-    for key, tally in tallies.items():
-        bounded = tally["bounded"]
-        covered = tally["covered"] / bounded if bounded else None
-        errors = np.abs(tally["errors"])
-        out[key] = {"coverage": covered, "coverage_stderr": None if covered is None else math.sqrt(
-                        max(covered * (1 - covered), 0.25 / bounded) / bounded),
-                    "reported": tally["reported"] / draws, "bounded": bounded / draws,
-                    "median_abs_rel_error": float(np.median(errors)) if errors.size else None}
-    print(f"{scenario['name']}: {time.process_time() - started:.2f} CPU-s", flush=True)  # the log, not the data
+           "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws),
+           "cpu_seconds_per_fit": cpu / draws}
+    for key in truth:
+        out[key] = summary(outcomes[key], draws)
+    print(f"{scenario['name']}: {cpu:.2f} CPU-s", flush=True)  # the log, not the data
     return out
 
 
-def _cell(entry):
-    if entry["coverage"] is None or entry["bounded"] < 0.2:  # too few intervals to count
-        return "--"
-    return f"{100 * entry['coverage']:.0f}"
+def _percent(x, digits=0):
+    return "--" if x is None else f"{100 * x:.{digits}f}"
 
 
-def _error(entry):
-    e = entry["median_abs_rel_error"]
-    if e is None:
+#: Fewest reported intervals or bounds for a coverage to be printed (below it the rate says little).
+MIN_REPORTED = 5
+
+
+def _coverage(entry):
+    if entry["coverage"] is None or entry["coverage_count"] < MIN_REPORTED:
         return "--"
-    return "$>1000$" if e >= 10 else f"{100 * e:.2g}"  # an unresolved G runs off towards infinity
+    return f"${100 * entry['coverage']:.0f} \\pm {100 * entry['coverage_stderr']:.0f}$"
+
+
+def _signed(x):
+    if x is None:
+        return "--"
+    return f"${100 * x:+.2g}$" if abs(x) < 10 else "$>10^3$"
+
+
+def _width(x):
+    if x is None:
+        return "--"
+    return f"{100 * x:.2g}" if x < 0.1 else f"{100 * x:.0f}"
 
 
 def table(rows) -> str:
-    lines = [r"\begin{tabular}{lrrrrrrrrrrr}", r"\hline",
-             r"scenario & $\max|T^*|$ & $s_T$ [N\,m] & $s_\theta$ [rad] & \multicolumn{3}{c}{coverage [\%]}"
-             r" & \multicolumn{3}{c}{median $|$error$|$ [\%]} & $G$ found & flagged \\",
-             r" & & & & $f$ & $G$ & $C$ & $f$ & $G$ & $C$ & [\%] & [\%] \\", r"\hline"]
+    lines = [r"\begin{tabular}{lrrrrlrrrrr}", r"\hline",
+             r"scenario & $\max|T^*|$ & $s_T$ [N\,m] & $s_\theta$ [rad] & slip & & interval & bound & coverage"
+             r" & median bias & median width \\",
+             r" & & & & [\%] & & [\%] & [\%] & [\%] & [\%] & [\%] \\", r"\hline"]
     for r in rows:
-        cells = [latex_escape(r["name"]), f"{r['max_torque_ratio']:.3g}", f"${sci(r['torque_noise'], 1)}$",
-                 f"${sci(r['twist_noise'], 1)}$"]
-        cells += [_cell(r[k]) for k in ("friction", "shear_modulus", "compliance")]
-        cells += [_error(r[k]) for k in ("friction", "shear_modulus", "compliance")]
-        cells += [f"{100 * r['shear_modulus']['reported']:.0f}", f"{100 * r['noise_limited']:.0f}"]
-        lines.append(" & ".join(cells) + r" \\")
-    lines += [r"\hline", r"\end{tabular}"]
+        for j, (key, symbol) in enumerate(PARAMETERS):
+            e = r[key]
+            head = [latex_escape(r["name"]), f"{r['max_torque_ratio']:.3g}", f"${sci(r['torque_noise'], 1)}$",
+                    f"${sci(r['twist_noise'], 1)}$", _percent(r["slip_detected"])] if j == 0 else [""] * 5
+            cells = head + [f"${symbol}$", _percent(e["interval"]), _percent(e["bound"]), _coverage(e),
+                            _signed(e["median_bias"]), _width(e["median_width"])]
+            lines.append(" & ".join(cells) + r" \\")
+        lines.append(r"\hline")
+    lines += [r"\end{tabular}"]
     return "\n".join(lines) + "\n"
 
 
@@ -122,8 +162,9 @@ def main():
     rows = []
     for scenario in json.loads(args.scenarios):
         rows.append(scenario_record(rig, scenario, args.draws, args.cycles, args.samples_per_cycle, rng))
-        print(json.dumps({k: rows[-1][k] for k in ("name", "friction", "shear_modulus", "compliance")}), flush=True)
-    write_json(args.json, {"specimen": specimen, "scenarios": rows, "confidence": 0.95},
+        print(json.dumps({k: rows[-1][k] for k in ("name", "slip_detected", "friction", "shear_modulus",
+                                                   "compliance")}), flush=True)
+    write_json(args.json, {"specimen": specimen, "scenarios": rows, "confidence": CONFIDENCE},
                method="fit_loop on synthetic rigs (torsional_contact.fitting.synthetic)", draws=args.draws,
                seed=args.seed, cycles=args.cycles, samples_per_cycle=args.samples_per_cycle)
     write_text(args.tex, table(rows))
@@ -131,16 +172,22 @@ def main():
               "ft-cycles": f"{args.cycles:g}", "ft-friction": f"{specimen['friction']:g}",
               "ft-modulus-gpa": f"{specimen['shear_modulus'] / 1e9:g}",
               "ft-compliance": f"{sci(specimen['compliance'], 1)}", "ft-radius-mm": f"{specimen['radius'] * 1e3:g}",
-              "ft-force-n": f"{specimen['normal_force']:g}"}
+              "ft-force-n": f"{specimen['normal_force']:g}",
+              "ft-coverage-stderr": f"{100 * math.sqrt(CONFIDENCE * (1 - CONFIDENCE) / args.draws):.1f}"}
     for r in rows:
         key = r["name"]
-        for short, name in (("f", "friction"), ("g", "shear_modulus"), ("c", "compliance")):
-            macros[f"ft-{key}-cov-{short}"] = _cell(r[name])
-            macros[f"ft-{key}-err-{short}"] = _error(r[name])
+        for name, symbol in PARAMETERS:
+            e = r[name]
+            short = symbol.lower()
+            macros[f"ft-{key}-cov-{short}"] = _percent(e["coverage"] if e["coverage_count"] >= MIN_REPORTED else None)
+            macros[f"ft-{key}-cov-se-{short}"] = _percent(e["coverage_stderr"])
+            macros[f"ft-{key}-interval-{short}"] = _percent(e["interval"])
+            macros[f"ft-{key}-bound-{short}"] = _percent(e["bound"])
+            macros[f"ft-{key}-width-{short}"] = _percent(e["median_width"], 1)
         macros[f"ft-{key}-twist-noise"] = sci(r["twist_noise"], 1)
-        macros[f"ft-{key}-flagged"] = f"{100 * r['noise_limited']:.0f}"
-        macros[f"ft-{key}-g-found"] = f"{100 * r['shear_modulus']['reported']:.0f}"
         macros[f"ft-{key}-torque-noise-pct"] = f"{100 * r['torque_noise_fraction']:.2g}"
+        macros[f"ft-{key}-slip"] = _percent(r["slip_detected"])
+        macros[f"ft-{key}-slip-se"] = _percent(r["slip_detected_stderr"], 1)
     write_macros(args.macros, macros, "workflow/scripts/friction_test_coverage.py")
 
 

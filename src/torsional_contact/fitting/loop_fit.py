@@ -1,4 +1,4 @@
-r"""Friction coefficient and shear modulus from a measured torque-twist loop.
+r"""Friction coefficient and shear modulus from a measured torque-twist loop, with honest intervals.
 
 Units: torque N m, twist rad, radius m, normal force N, modulus Pa (SI floats or quantities,
 converted by ``units``).
@@ -13,70 +13,88 @@ rig's compliance are one linear term, since neither can be told apart from a loo
 with T_s = f F a / 2 the slip-onset torque, p0 = F / (pi a^2), omega the contact's rigid
 rotation along the history by the memory rules, C the compliance (rad / (N m)) and theta_0 the
 arbitrary zero of the twist (a parameter: the virgin state sits at an unknown twist).
-Parameters: T_s (hence f = 2 T_s / (F a)), k (hence G = 4 T_s / (pi a^3 k)), C, theta_0, and the
-twist at every reversal of the loop.  The record must start from the virgin interface (first
-loading included) and the torque channel must read zero at zero torque.
+Parameters: T_s (hence f = 2 T_s / (F a)), kappa = k / (C T_s) (hence 1/G = pi a^3 kappa C / 4),
+C, theta_0, and the twist U_j at every reversal of the loop (``fitting.loop_model``).  The record
+must start from the virgin interface (first loading included) and the torque channel must read
+zero at zero torque.  Written the way it is always defined, the torque is a function of the twist
+along the branches (``fitting.masing``), saturating at the gross-slip torque 2 f F a / 3: a
+twist-controlled rig's gross-slip plateau needs no special case.
 
-The residual
+Errors in both variables
+------------------------
+Both channels are noisy (levels s_T, s_theta: given, or estimated from the second differences by
+``fitting.samples.noise_level``; only their ratio shapes the fit, the overall scale is estimated
+from the residuals).  Each sample's residual is its orthogonal distance from the curve in noise
+units, its true twist eliminated by minimisation (``fitting.loop_model``: the foot point on the
+curve; the functional errors-in-variables likelihood, i.e. orthogonal distance regression along
+every branch).  The turning point of each branch is the true state of the reversal's own sample,
+which keeps its two residuals.  The first implementation used the effective-variance residual
+(T_i - T(theta_i)) / sqrt(s_T^2 + T'^2 s_theta^2) at the measured twist, the distance's
+first-order approximation, and left the twists at the reversals free: where the contact's twist
+is a few noise levels wide (partial slip at 1e-5 rad of twist noise) the second-order error
+biased f by 1.5 % (1.5 of its standard errors) and the free turning points let a loop in stick
+fit its noise with slip.  With N samples and M reversals there are N + M residuals, 4 + M
+parameters and s^2 = sum r^2 / (N - 4) (one degree of freedom per sample: two observations, one
+latent twist; no Neyman-Scott halving).
+
+Fitting
+-------
+``scipy.optimize.least_squares`` (trust region reflective, bounds T_s, C > 0, ``KAPPA_MIN`` <=
+kappa <= ``KAPPA_MAX``, each U_j within ``REVERSAL_REACH`` noise levels of its sample) on the
+residuals with their analytic Jacobian (``fitting.profile.fit``), from the best point of a grid of
+starting values (T_s from 0.75 to 1.05 times the largest torque, kappa from 0.02 to 1; C and
+theta_0 from a straight-line fit to all samples and to the central ones, |T| < max|T| / 2, which
+stay in stick on every branch of a symmetric loop).  lmfit would add named parameters and the
+same covariance, nothing the problem needs.
+
+Did it slip?
 ------------
-Both channels are noisy.  The model is written the way it is always defined: the torque as a
-function of the twist along the branches (``fitting.masing``), which saturates at the
-gross-slip torque 2 f F a / 3 instead of running off to an infinite rotation.  The residual of
-sample i is the effective-variance residual (Orear's method, the first-order form of
-orthogonal distance regression):
+A loop whose torques stay below the slip onset is straight (C and theta_0 only).  The
+likelihood-ratio statistic of the straight loop against the full model (with the gross-slip
+plateau 4/3 T_s not below the straight loop's largest torque, ``PLATEAU_FLOOR``: a plateau lower
+down would clip the noisy tips of a straight loop) is compared with the critical value that
+Davies' bound gives for the record at hand (``fitting.slip_test``: T_s is not identified under
+stick and kappa >= 0 sits on its bound, so the statistic is not chi-square; the fixed 5.99 of
+chi-square with 2 degrees of freedom, with free turning points, detected slip in about a fifth of
+the records of a loop in stick).  Without slip the result gives no friction value, only the bound
+f >= 2 max|T| / (F a) that full stick implies (``lower_bound``), and as ``interval`` the weaker
+bound that holds whatever G (the torque never exceeded the gross-slip torque): f >= 1.5 (max|T| -
+2 s_T) / (F a); G is not identified.
 
-    r_i = (T_i - T_model(theta_i)) / sqrt(s_T^2 + (dT/dtheta)_i^2 s_theta^2),
+Intervals
+---------
+``stderr`` is the Wald standard error from s^2 (J^T J)^+.  ``interval`` is the profile-likelihood
+interval (``fitting.profile``) on T_s (hence f), on y = kappa C (linear in 1/G, mapped to G)
+and on C: the values whose likelihood-ratio statistic stays below F(1, N - 4) at the confidence
+level.  Unlike the Wald interval it follows the curved, flat ridge along which T_s and kappa
+trade off in partial slip (there the Wald standard error of f was a third of the scatter of the
+estimates), and it ends where the data stop telling:
 
-a torque residual where the loop is flat (a gross-slip plateau, dT/dtheta = 0: there the
-twist says nothing and the plateau torque fixes f directly) and, in effect, a twist residual
-where it is steep (stick: (T_i - T_model) / (dT/dtheta) is the twist residual).  No sample is
-dropped and none is classified by hand.  s_T and s_theta are the channels' noise levels
-(given, or estimated by ``fitting.samples.noise_level``); the overall scale is then estimated
-from the residuals (the covariance is multiplied by the reduced chi-square).
+* when the profile of 1/G stays below the critical value down to kappa = ``KAPPA_MIN`` the
+  modulus has no upper end; when it stays below it up to kappa = ``KAPPA_MAX`` its lower end is
+  only that model bound (``assumed_end`` "lower"); either way G is not identified
+  (``identified`` false, no value, ``interval`` what the data do say);
+* when the profile of T_s stays below it up to the straight loop's largest torque (every larger
+  T_s is the straight loop) the friction has only its lower bound.
 
-The reversals
--------------
-The twist at each reversal is a parameter: the memory rules start every branch at its
-reversal, and the extreme sample is a noisy and biased (by about 1.5 noise levels) stand-in
-for the true turning point.  Their uncertainty enters the intervals of f, G and C through the
-joint covariance.
-
-Fitting and intervals
----------------------
-``scipy.optimize.least_squares`` (trust region reflective, bounds T_s, k, C > 0) from
-starting values on a grid (T_s from 0.75 to 1.3 times the largest torque, kappa = k / (C T_s)
-from 1e-3 to 30), C and theta_0 from the stick fit; the Jacobian by finite differences.
-lmfit would add named parameters and the same covariance, nothing the problem needs.  The
-covariance is s^2 (J^T J)^-1 (pseudo-inverse: a reversal in stick has no influence) and the
-95 % intervals are Wald intervals with Student's t on N - P degrees of freedom: on T_s (f), on
-C, and on 1/G (linear in k, the quantity the loop measures) mapped to G, whose upper end is
-infinite when the interval on 1/G reaches 0.
+kappa <= ``KAPPA_MAX`` holds when C includes at least the shaft over the gauge length; an end of
+the friction interval set by it is named in ``assumed_end`` and ``message``.  ``noise_limited``
+(with a ``NoiseLimitedFitWarning``) flags a result with a parameter not identified.
+``bootstrap=N`` adds a parametric bootstrap (``fitting.bootstrap``): N records simulated from the
+fitted curve and noise, refitted, and bias-corrected percentile intervals (``bootstrap_interval``),
+a check of the profile intervals at the cost of N fits.
 
 Limits
 ------
-The effective-variance residual is exact to first order in the noise.  Its second-order term
-is a bias of about (1/2) (s / w) s per sample, where s is the twist noise (the torque noise
-counted through C) and w the scale on which the loop bends: the contact's twist amplitude
-k omega(max T*), or k omega(4/3 - 1e-3) = 0.9 k for a gross-slip loop (its knee).  Over the N_b
-samples where the loop bends (slope between 2 % and 98 % of the elastic one) that is about
-(1/2)(s / w) sqrt(N_b) standard errors.  When it
-exceeds ``NOISE_LIMIT`` (one standard error) the estimates are biased and the intervals too
-narrow (the coverage study shows by how much): the result is flagged ``noise_limited`` and a
-``NoiseLimitedFitWarning`` is raised.  Gross-slip loops, whose contact twist is large, are not
-affected; partial-slip loops need a twist resolution well below the contact's twist.
-
-Identifiability
----------------
-A loop whose every torque stays below the slip onset has no hysteresis: the twist is linear
-in the torque and only C, theta_0 are defined.  The fit compares the full model with the
-linear one (stick): when the decrease of the residual sum, in units of the residual variance,
-is below the 95 % point of chi-square with 2 degrees of freedom (5.99), the loop shows no slip
-and the result gives no friction value, only the bound f >= 2 max|T| / (F a) that full stick
-implies (``lower_bound``), and no modulus.  A slip too small to detect is not excluded by the
-record, so the ``interval`` of f is the weaker bound that holds whatever G: the torque never
-exceeded the gross-slip torque, f >= 1.5 (max|T| - 2 s_T) / (F a).  With slip, G is reported
-only when its interval excludes infinity (the contact's twist k is resolved from zero);
-otherwise only its lower bound.
+The foot points make the residuals exact in the noise; what remains is the bias of the
+functional maximum-likelihood estimator itself (of order s^2 times the curvature of the loop, in
+noise units), which grows with the twist noise against the contact's twist: in partial slip at
+1e-5 rad it is about 0.4 of the half-width of the f interval, at 4e-5 rad about 0.7, and the
+coverage drops towards 90 % (the coverage study, ``workflow/scripts/friction_test_coverage.py``,
+measures it per scenario).  A loop that barely slips against the noise gives a bound on f, not a
+value; a modulus whose contact twist (k omega, tens of microradians in partial slip) is buried in
+the twist noise gives bounds on G.  A fit takes about 0.05-0.5 s for a few hundred samples (the
+flat profiles of noisy partial-slip loops cost the most).
 """
 
 from __future__ import annotations
@@ -90,48 +108,63 @@ from scipy import optimize, stats
 
 from .. import units
 from ..criteria import GROSS_SLIP_TORQUE
-from ..curves import monotonic_curves
 from ..diagnostics import NoiseLimitedFitWarning
-from .masing import torque_along, walk
+from . import profile as profiles
+from .loop_model import LoopModel
 from .samples import checked_loop, noise_level, reversal_threshold, turning_points
-from .skeleton import Skeleton
+from .slip_test import GRID, critical_value, path_length
 
-__all__ = ["Estimate", "LoopFit", "fit_loop", "STICK_TEST_QUANTILE"]
+__all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX"]
 
-#: 95 % point of chi-square with 2 degrees of freedom: the slip test (full model against stick).
-STICK_TEST_QUANTILE = float(stats.chi2.ppf(0.95, 2))
 #: Largest kappa = k / (C T_s): C holds at least the shaft over the gauge length L, L / (G J), so kappa <= 2 a / L,
 #: and the twist formula needs sections about 2 a or more from the interface (L >= 4 a, kappa <= 0.5); 2 leaves room.
 KAPPA_MAX = 2.0
-#: Evaluations per least-squares pass: enough for any loop with slip (about 10-20 are used); a loop in stick,
-#: where T_s and kappa are free to wander, stops here (the stick test then errs towards "no slip").
-MAX_EVALUATIONS = 60
+#: Smallest kappa: the contact's twist rounds the knee of a gross-slip loop over a width that grows like kappa
+#: log(1/kappa), so that the residuals have an infinite derivative at kappa = 0, where a fit would stop as at a
+#: minimum.  At 1e-4 (G about 3e5 times its value for kappa = 0.3) the modulus is infinite for any purpose.
+KAPPA_MIN = 1e-4
 #: The starting grid: T_s / max|T| (0.75: a gross-slip plateau) and kappa.
 START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
 START_KAPPAS = (0.02, 0.2, 1.0)
-#: The bend of a gross-slip loop: its knee ends where omega_m = 0.9 (T* = 4/3 - 1e-3), beyond it lies the plateau.
-KNEE_TORQUE = GROSS_SLIP_TORQUE - 1e-3
-#: Largest expected second-order bias (in standard errors) of an estimate that is not flagged as noise limited.
-NOISE_LIMIT = 1.0
 #: Samples whose slope dT/dtheta is at least this fraction of the elastic 1/C count in ``residual_rms``.
 PLATEAU_SLOPE = 0.5
+#: The slip test's alternative keeps T_s at least this fraction of the straight loop's largest torque (its gross-slip
+#: plateau, 4/3 T_s, not below that torque).
+PLATEAU_FLOOR = 0.75
+#: How far (in noise levels of the twist) the twist at a reversal may lie from the extreme sample.
+REVERSAL_REACH = 6.0
+#: Restarts from a better minimum found by a profile.
+RESTARTS = 3
 
 
 @dataclass(frozen=True)
 class Estimate:
-    """A fitted quantity: ``value``, ``stderr``, ``interval`` (lower, upper; None: unbounded or undefined)."""
+    """A fitted quantity: ``value``, ``stderr``, ``interval`` (lower, upper; None: unbounded or undefined).
+
+    ``identified`` is false when the data do not bound the quantity on both sides: ``value`` and
+    ``stderr`` are then None, ``interval`` holds what the data do say (None: unbounded) and
+    ``lower_bound`` its lower end.  ``assumed_end`` ("lower" or "upper") names an end of the interval
+    set by the model's bound kappa <= ``KAPPA_MAX`` rather than by the data.  ``bootstrap_interval``:
+    the bias-corrected percentile interval of a parametric bootstrap, when asked for.
+    """
 
     value: float | None
     stderr: float | None
     interval: tuple[float | None, float | None]
     identified: bool = True
     lower_bound: float | None = None
+    bootstrap_interval: tuple[float | None, float | None] | None = None
+    assumed_end: str | None = None
 
     def as_dict(self) -> dict:
         out = {"value": _json(self.value), "stderr": _json(self.stderr),
                "interval": [_json(self.interval[0]), _json(self.interval[1])], "identified": self.identified}
         if self.lower_bound is not None:
             out["lower_bound"] = _json(self.lower_bound)
+        if self.assumed_end is not None:
+            out["assumed_end"] = self.assumed_end
+        if self.bootstrap_interval is not None:
+            out["bootstrap_interval"] = [_json(self.bootstrap_interval[0]), _json(self.bootstrap_interval[1])]
         return out
 
 
@@ -155,19 +188,28 @@ class LoopFit:
     noise : dict
         The noise levels used (``torque`` N m, ``twist`` rad) and whether they were ``estimated``.
     noise_scale : float
-        sqrt(reduced chi-square): 1 when the residuals match the noise levels.
+        sqrt(reduced chi-square): 1 when the distances match the noise levels.
     regime : str
         "stick", "partial-slip" or "gross-slip": the largest |T*| the fitted loop reaches.
     slip_detected : bool
     stick_test : float
+        Likelihood-ratio statistic of stick against the full model (residual variances).
+    stick_critical : float
+        Its critical value at the test's level (1 - confidence), by Davies' bound.
     noise_limited : bool
-        The twist noise is too large against the contact's twist for the intervals to be trusted
-        (module docstring, "Limits"); a ``NoiseLimitedFitWarning`` was raised.
-        Decrease of the residual sum from stick to the full model, in residual variances.
+        The noise hides a parameter: f or G has only a bound (module docstring, "Limits"); a
+        ``NoiseLimitedFitWarning`` was raised.
+    interval_method : str
+        "profile likelihood" (slip) or "wald" (stick: C and theta_0 of a straight line, exact).
     message : str
     samples, reversals, dof : int
     fitted_torque : ndarray
-        The model's torque at every sample (N m).
+        The model's torque at every measured twist (N m).
+    bootstrap : int
+        Number of parametric-bootstrap refits behind ``bootstrap_interval`` (0: none).
+    parameters : ndarray or None
+        The fitted parameter vector [T_s (N m), kappa, C (rad/(N m)), theta_0 (rad), U_1..U_M (rad)]
+        (``fitting.loop_model``); None in stick.
     """
 
     friction: Estimate
@@ -182,14 +224,19 @@ class LoopFit:
     regime: str
     slip_detected: bool
     stick_test: float
+    stick_critical: float
     noise_limited: bool
+    interval_method: str
     message: str
     samples: int
     reversals: int
     dof: int
     radius: float
     normal_force: float
+    confidence: float
     fitted_torque: np.ndarray = field(repr=False)
+    bootstrap: int = 0
+    parameters: np.ndarray | None = field(default=None, repr=False)
 
     def as_dict(self) -> dict:
         """JSON-ready (non-finite numbers -> None); ``fitted_torque`` is left out."""
@@ -206,7 +253,11 @@ class LoopFit:
             "regime": self.regime,
             "slip_detected": self.slip_detected,
             "stick_test": _json(self.stick_test),
+            "stick_critical": _json(self.stick_critical),
             "noise_limited": self.noise_limited,
+            "interval_method": self.interval_method,
+            "confidence": self.confidence,
+            "bootstrap": self.bootstrap,
             "message": self.message,
             "samples": self.samples,
             "reversals": self.reversals,
@@ -219,83 +270,8 @@ class LoopFit:
         }
 
 
-class _Model:
-    """The torque at every sample for a parameter vector [T_s, kappa, C, theta_0, U_1..U_M] (module docstring)."""
-
-    def __init__(self, torque, twist, reversal_index, torque_noise, twist_noise):
-        self.torque, self.twist = torque, twist
-        self.reversals = reversal_index
-        self.segment = np.searchsorted(reversal_index, np.arange(twist.size), side="left")
-        last = self.segment == reversal_index.size
-        heading = np.sign(twist[-1] - (twist[reversal_index[-1]] if reversal_index.size else twist[0])) or 1.0
-        self.end = float(twist[last].max() if heading > 0 else twist[last].min())
-        self.torque_noise, self.twist_noise = torque_noise, twist_noise
-        self._cache = (None, None)
-
-    def evaluate(self, p, jacobian: bool = False):
-        """(torque, slope dT/dtheta, turning-point torques[, jacobian]) at every sample."""
-        key = (tuple(p), jacobian)
-        if self._cache[0] == key:
-            return self._cache[1]
-        slip_torque, kappa, compliance, offset = p[:4]
-        skeleton = Skeleton(kappa)
-        scale = compliance * slip_torque
-
-        def branch(v):
-            x = v / scale
-            if not jacobian:
-                t, slope = skeleton(x)
-                return slip_torque * t, slope / compliance
-            t, slope, omega = skeleton(x, rotation=True)
-            with np.errstate(invalid="ignore"):
-                d_kappa = np.where(slope > 0, -slip_torque * omega * slope, 0.0)
-            grad = np.column_stack([t - slope * x, d_kappa, -slip_torque * slope * x / compliance])
-            return slip_torque * t, slope / compliance, grad
-
-        targets = np.append(p[4:], self.end) - offset
-        out = torque_along(walk(targets), self.twist - offset, self.segment, branch, jacobian)
-        self._cache = (key, out)
-        return out
-
-    def weights(self, p):
-        """1 / sqrt(s_T^2 + (dT/dtheta)^2 s_theta^2): the effective-variance weights at ``p``."""
-        slope = self.evaluate(p)[1]
-        with np.errstate(over="ignore"):  # a trial C -> 0 makes the slope overflow: weight 0
-            return 1.0 / np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
-
-    def linear_weights(self, compliance):
-        return np.full(self.torque.size, 1.0 / math.sqrt(self.torque_noise**2 + (self.twist_noise / compliance) ** 2))
-
-
-def _least_squares(model: _Model, start, lower, upper, passes: int = 3, stop=None):
-    """Effective-variance least squares: weights fixed per pass, updated from the solution (IRLS).
-
-    ``stop(result)``: end after a pass for which it is true (a loop plainly in stick).
-    """
-    p = np.asarray(start, dtype=float)
-    result = None
-    for _ in range(passes):
-        w = model.weights(p)
-
-        def fun(q, w=w):
-            return w * (model.torque - model.evaluate(q, jacobian=True)[0])
-
-        def jac(q, w=w):
-            return -w[:, None] * model.evaluate(q, jacobian=True)[3]
-
-        result = optimize.least_squares(fun, np.clip(p, lower, upper), jac=jac, bounds=(lower, upper),
-                                        x_scale="jac", method="trf", max_nfev=MAX_EVALUATIONS)
-        with np.errstate(over="ignore", divide="ignore"):
-            change = np.max(np.abs(result.x - p) / np.maximum(np.sqrt(np.diag(_covariance(result.jac, 1.0))), 1e-300))
-        p = result.x
-        # settled: the parameters moved by less than 0.05 standard errors, or the caller's verdict is plain
-        if change < 0.05 or (stop is not None and stop(result)):
-            break
-    return result
-
-
-def _linear_least_squares(model: _Model):
-    """Stick: theta = theta_0 + C T, the same effective-variance residuals (Deming regression)."""
+def _stick_line(model: LoopModel):
+    """The straight loop through every sample: (C, theta_0, sum of squares, result)."""
     torque, twist, s_t, s_theta = model.torque, model.twist, model.torque_noise, model.twist_noise
 
     def fun(q):
@@ -303,15 +279,31 @@ def _linear_least_squares(model: _Model):
 
     slope, intercept = np.polyfit(torque, twist, 1)
     slope = slope if slope > 0 else float(np.ptp(twist) / np.ptp(torque))
-    return optimize.least_squares(fun, [slope, intercept], bounds=([slope * 1e-6, -np.inf], [np.inf, np.inf]),
-                                  x_scale="jac")
+    result = optimize.least_squares(fun, [slope, intercept], bounds=([slope * 1e-6, -np.inf], [np.inf, np.inf]),
+                                    x_scale="jac")
+    return result
 
 
-def _covariance(jacobian: np.ndarray, scale2: float) -> np.ndarray:
-    u, s, vt = np.linalg.svd(jacobian, full_matrices=False)
-    keep = s > s[0] * 1e-10 * math.sqrt(jacobian.shape[0])
-    inverse = (vt[keep].T / s[keep] ** 2) @ vt[keep]
-    return scale2 * inverse
+def _central_line(model: LoopModel, peak: float):
+    """C and theta_0 from the samples with |T| < max|T| / 2 (stick on every branch of a symmetric loop)."""
+    central = np.abs(model.torque) < 0.5 * peak
+    if np.count_nonzero(central) < 5 or np.ptp(model.torque[central]) == 0:
+        return None
+    slope, intercept = np.polyfit(model.torque[central], model.twist[central], 1)
+    return (float(slope), float(intercept)) if slope > 0 else None
+
+
+def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:
+    """Starting parameters: the best point of a grid in (T_s, kappa, line) by the first-order distances."""
+    best, best_p = math.inf, None
+    for compliance, offset in lines:
+        for ratio in START_RATIOS:
+            for kappa in START_KAPPAS:
+                p = np.concatenate([[ratio * peak, kappa, compliance, offset], reversals])
+                value = float(np.sum(model.first_order_distances(p) ** 2))
+                if value < best:
+                    best, best_p = value, p
+    return best_p
 
 
 def _wald(value, stderr, t):
@@ -319,7 +311,7 @@ def _wald(value, stderr, t):
 
 
 def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_noise=None,
-             confidence: float = 0.95) -> LoopFit:
+             confidence: float = 0.95, bootstrap: int = 0, seed=None) -> LoopFit:
     """Fit f, G and the compliance to a measured torque-twist loop (module docstring).
 
     Parameters
@@ -332,7 +324,12 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     torque_noise, twist_noise : optional
         Standard deviations of the measurement noise (N m, rad); estimated from the data by default.
     confidence : float
-        Level of the intervals (default 0.95).
+        Level of the intervals (default 0.95); the slip test's level is 1 - confidence.
+    bootstrap : int
+        Number of parametric-bootstrap refits (0: none; ``fitting.bootstrap``): adds
+        ``bootstrap_interval`` to f, G and C.  Costs about ``bootstrap`` fits.
+    seed :
+        Seed of the bootstrap's random numbers (``numpy.random.default_rng``).
 
     Returns
     -------
@@ -343,131 +340,254 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     ValueError
         Naming the argument: arrays of different lengths, fewer than ``samples.MIN_SAMPLES``
         samples, a non-finite sample (by index), a constant channel, a bad radius, force,
-        noise level or confidence.
+        noise level, confidence or bootstrap count.
     """
     a = units.positive_si("radius", radius, "length")
     force = units.positive_si("normal_force", normal_force, "force")
     torque, twist = checked_loop(units.si_array("torque", torque, "torque"), units.si_array("twist", twist, "angle"))
     if not 0 < confidence < 1:
         raise ValueError(f"confidence must lie in (0, 1), got {confidence!r}")
+    if isinstance(bootstrap, bool) or not isinstance(bootstrap, (int, np.integer)) or not (
+            bootstrap == 0 or 20 <= bootstrap <= 100_000):
+        raise ValueError(f"bootstrap must be 0 (none) or an integer from 20 to 100000, got {bootstrap!r}")
     estimated = torque_noise is None or twist_noise is None
     torque_range, twist_range = float(np.ptp(torque)), float(np.ptp(twist))
     s_t = noise_level(torque) if torque_noise is None else units.positive_si("torque_noise", torque_noise, "torque")
     s_theta = noise_level(twist) if twist_noise is None else units.positive_si("twist_noise", twist_noise, "angle")
     s_t, s_theta = max(s_t, 1e-12 * torque_range), max(s_theta, 1e-12 * twist_range)  # noise-free records
     reversal_index = turning_points(twist, reversal_threshold(twist, s_theta))
-    model = _Model(torque, twist, reversal_index, s_t, s_theta)
+    model = LoopModel(torque, twist, reversal_index, s_t, s_theta)
     n = torque.size
     peak = float(np.max(np.abs(torque)))
-    t_of = lambda dof: float(stats.t.ppf(0.5 + confidence / 2, dof))  # noqa: E731
     noise = {"torque": s_t, "twist": s_theta, "estimated": estimated}
-    common = {"samples": n, "reversals": int(reversal_index.size), "radius": a, "normal_force": force, "noise": noise}
+    common = {"samples": n, "reversals": int(reversal_index.size), "radius": a, "normal_force": force, "noise": noise,
+              "confidence": confidence}
 
-    linear = _linear_least_squares(model)
-    chi2_linear = float(np.sum(linear.fun**2))
-    start = _start(model, linear.x, twist[reversal_index], peak)
+    line = _stick_line(model)
+    s_stick = float(np.sum(line.fun**2))
+    lines = [tuple(line.x)]
+    central = _central_line(model, peak)
+    if central is not None:
+        lines.append(central)
+    start = _start(model, lines, twist[reversal_index], peak)
     lower = np.full(start.size, -np.inf)
     upper = np.full(start.size, np.inf)
-    lower[:3] = [1e-9 * peak, 0.0, linear.x[0] * 1e-6]
+    lower[:3] = [1e-9 * peak, KAPPA_MIN, min(c for c, _ in lines) * 1e-6]
     upper[1] = KAPPA_MAX
-    dof = n - start.size
+    # the true turning points lie within a few noise levels (in twist: the twist's and the torque's through C) of the
+    # extreme samples; unbounded, the reversal twists of a loop in stick wander off to fit noise with slip elsewhere
+    reach = REVERSAL_REACH * math.hypot(s_theta, lines[0][0] * s_t)
+    lower[4:] = twist[reversal_index] - reach
+    upper[4:] = twist[reversal_index] + reach
+    dof = n - 4  # N - M distances and 2 M reversal residuals for 4 + M parameters (``loop_model``)
+    p, s_full, result = profiles.fit(model, start, lower, upper)
+    jacobian = result.jac
+    scale2 = s_full / dof
+    straight = (s_stick - s_full) / scale2  # LR of the straight loop: the profile of T_s above the largest torque
+    compliance_0, offset_0 = line.x
+    foot_0 = _line_foot(torque, twist, compliance_0, offset_0, s_t, s_theta)
+    stick_peak = float(np.max(np.abs(foot_0 - offset_0))) / compliance_0
+    # The slip test's alternative: slip that shows as the contact's twist, with the gross-slip plateau not below the
+    # straight loop's largest torque (a plateau lower down clips the noisy tips of a loop in stick; fitting the
+    # noise there is no evidence of slip, and it is not the smooth departure that Davies' bound counts).
+    floor = PLATEAU_FLOOR * stick_peak
+    s_test = s_full
+    if p[0] < floor:
+        lower_test = lower.copy()
+        lower_test[0] = floor
+        start_test = p.copy()
+        start_test[0] = floor * (1 + 1e-6)
+        s_test = min(profiles.fit(model, start_test, lower_test, upper)[1], s_stick)
+    stick_test = (s_stick - s_test) / scale2
+    # Davies' bound needs the path of the score only when the statistic is not far above any critical value it can
+    # give (the unit score's path over GRID points is at most 2 (GRID - 1) long)
+    stick_critical = critical_value(2.0 * (GRID - 1), 1.0 - confidence)
+    if stick_test < stick_critical:
+        stick_critical = critical_value(path_length(model, compliance_0, offset_0, foot_0), 1.0 - confidence)
 
-    def plainly_stick(result):  # far below the slip test's threshold: more passes cannot change the verdict
-        chi2_full = float(np.sum(result.fun**2))
-        return (chi2_linear - chi2_full) / (chi2_full / dof) < 0.25 * STICK_TEST_QUANTILE
+    if stick_test < stick_critical:
+        return _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common)
 
-    full = _least_squares(model, start, lower, upper, stop=plainly_stick)
-    chi2 = float(np.sum(full.fun**2))
-    scale2 = chi2 / dof
-    stick_test = (chi2_linear - chi2) / scale2
+    critical = float(stats.f.ppf(confidence, 1, dof))
+    t_quantile = math.sqrt(critical)
+    for attempt in range(RESTARTS + 1):
+        cov = profiles.covariance(jacobian, scale2)
+        try:
+            ends = _profile_intervals(model, p, s_full, scale2, cov, critical, t_quantile, lower, upper, stick_peak,
+                                      straight, peak, better_minimum=attempt < RESTARTS)
+            break
+        except profiles.BetterMinimum as better:  # the first fit stopped in a local minimum: start again from there
+            p, s_full, result = profiles.fit(model, better.p, lower, upper)
+            jacobian = result.jac
+            if s_full > better.s:  # the refit stopped short of the profile point: take the point itself
+                p, s_full = better.p, better.s
+                jacobian = model.distances(p, jacobian=True)[1]
+            scale2 = s_full / dof
+            straight = (s_stick - s_full) / scale2
+    return _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
+                        confidence, bootstrap, seed, lower, upper, common)
 
-    if stick_test < STICK_TEST_QUANTILE:
-        compliance, offset = linear.x
-        cov = _covariance(linear.jac, chi2_linear / (n - 2))
-        se = np.sqrt(np.diag(cov))
-        bound = 2.0 * peak / (force * a)
-        proven = 1.5 * max(peak - 2.0 * s_t, 0.0) / (force * a)  # |T*| <= 4/3 whatever G: the torque was carried
-        return LoopFit(
-            friction=Estimate(None, None, (proven, None), identified=False, lower_bound=bound),
-            shear_modulus=Estimate(None, None, (None, None), identified=False),
-            compliance=Estimate(float(compliance), float(se[0]), _wald(compliance, se[0], t_of(n - 2))),
-            twist_offset=Estimate(float(offset), float(se[1]), _wald(offset, se[1], t_of(n - 2))),
-            correlation=None,
-            residual_rms=float(np.sqrt(np.mean((twist - offset - compliance * torque) ** 2))),
-            torque_residual_rms=float(np.sqrt(np.mean((torque - (twist - offset) / compliance) ** 2))),
-            noise_scale=math.sqrt(chi2_linear / (n - 2)), regime="stick", slip_detected=False, noise_limited=False,
-            stick_test=stick_test, dof=n - 2, fitted_torque=(twist - offset) / compliance,
-            message=(f"no slip detected (the full model lowers the residual sum by {stick_test:.2f} residual "
-                     f"variances, below {STICK_TEST_QUANTILE:.2f}): the loop is linear, without hysteresis; if the "
-                     f"interface stuck throughout, |T*| <= 1 gives f >= 2 max|T| / (F a) = {bound:.4g} "
-                     f"(lower_bound); a slip too small to detect is not excluded, and what the record proves "
-                     f"whatever G is |T*| <= 4/3: f >= 1.5 (max|T| - 2 s_T) / (F a) = {proven:.4g} (interval); "
-                     "G is not identified"),
-            **common)
 
-    cov = _covariance(full.jac, scale2)
-    slip_torque, kappa, compliance, offset = full.x[:4]
-    se = np.sqrt(np.diag(cov)[:4])
-    t_quantile = t_of(dof)
-    friction = 2.0 * slip_torque / (force * a)
-    f_se = 2.0 * se[0] / (force * a)
-    # 1/G = pi a^3 kappa C / 4 (k = kappa C T_s = 2 f p0 / G)
-    c_g = math.pi * a**3 / 4.0
-    y = c_g * kappa * compliance
-    gradient = np.array([0.0, c_g * compliance, c_g * kappa])
-    y_se = math.sqrt(max(float(gradient @ cov[:3, :3] @ gradient), 0.0))
-    y_lo, y_hi = _wald(y, y_se, t_quantile)
-    g_identified = bool(y_lo > 0)
-    g_lower = 1.0 / y_hi if y_hi > 0 else None
+def _line_foot(torque, twist, compliance, offset, s_t, s_theta):
+    """Foot points (true twists) of the samples on the straight loop theta = theta_0 + C T."""
+    # minimise (T - (u - theta_0) / C)^2 / s_T^2 + (theta - u)^2 / s_theta^2 over u
+    a = 1.0 / (compliance**2 * s_t**2)
+    b = 1.0 / s_theta**2
+    return (a * (compliance * torque + offset) + b * twist) / (a + b)
+
+
+def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower, upper, stick_peak, straight,
+                       peak, better_minimum: bool = True):
+    """Both ends of the profile intervals of T_s, y = kappa C and C (``fitting.profile``)."""
+    y = p[1] * p[2]
+    y_gradient = np.array([0.0, p[2], p[1]])
+    y_se = math.sqrt(max(float(y_gradient @ cov[:3, :3] @ y_gradient), 0.0))
+    se = {"slip_torque": math.sqrt(max(cov[0, 0], 0.0)), "compliance": math.sqrt(max(cov[2, 2], 0.0)), "product": y_se}
+    value = {"slip_torque": p[0], "compliance": p[2], "product": y}
+    # T_s above the straight loop's largest torque: the straight loop (LR ``straight``); a plateau at a third of the
+    # largest torque is far outside any interval; y at kappa = KAPPA_MIN: G infinite for any purpose
+    limits = {("slip_torque", 1): (stick_peak, straight), ("slip_torque", -1): (0.25 * peak, None),
+              ("product", -1): (KAPPA_MIN * p[2], None), ("product", 1): (None, None),
+              ("compliance", -1): (0.0, None), ("compliance", 1): (None, None)}
+    ends = {}
+    for kind in ("slip_torque", "product", "compliance"):
+        for side in (-1, 1):
+            limit, limit_lr = limits[(kind, side)]
+            if limit is not None and side * (limit - value[kind]) <= 0:
+                ends[(kind, side)] = profiles.ProfileEnd(None, None, 0)
+                continue
+            first = t_quantile * se[kind] if se[kind] > 0 else 0.1 * abs(value[kind])
+            ends[(kind, side)] = profiles.profile_end(model, p, s_min, scale2, kind, side, first, critical, lower,
+                                                      upper, KAPPA_MAX, limit, limit_lr, better_minimum)
+    return ends
+
+
+def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common):
+    n = model.torque.size
+    compliance, offset = line.x
+    cov = profiles.covariance(line.jac, s_stick / (n - 2))
+    se = np.sqrt(np.diag(cov))
+    t = float(stats.t.ppf(0.5 + confidence / 2, n - 2))
+    bound = 2.0 * peak / (force * a)
+    proven = 1.5 * max(peak - 2.0 * model.torque_noise, 0.0) / (force * a)  # |T*| <= 4/3 whatever G
+    torque, twist = model.torque, model.twist
+    return LoopFit(
+        friction=Estimate(None, None, (proven, None), identified=False, lower_bound=bound),
+        shear_modulus=Estimate(None, None, (None, None), identified=False),
+        compliance=Estimate(float(compliance), float(se[0]), _wald(compliance, se[0], t)),
+        twist_offset=Estimate(float(offset), float(se[1]), _wald(offset, se[1], t)),
+        correlation=None,
+        residual_rms=float(np.sqrt(np.mean((twist - offset - compliance * torque) ** 2))),
+        torque_residual_rms=float(np.sqrt(np.mean((torque - (twist - offset) / compliance) ** 2))),
+        noise_scale=math.sqrt(s_stick / (n - 2)), regime="stick", slip_detected=False, noise_limited=False,
+        stick_test=stick_test, stick_critical=stick_critical, interval_method="wald", dof=n - 2,
+        fitted_torque=(twist - offset) / compliance,
+        message=(f"no slip detected (the full model lowers the residual sum by {stick_test:.2f} residual "
+                 f"variances, below the critical value {stick_critical:.2f} of the slip test): the loop is "
+                 f"straight, without hysteresis; if the interface stuck throughout, |T*| <= 1 gives f >= "
+                 f"2 max|T| / (F a) = {bound:.4g} (lower_bound); a slip too small to detect is not excluded, and "
+                 f"what the record proves whatever G is |T*| <= 4/3: f >= 1.5 (max|T| - 2 s_T) / (F a) = "
+                 f"{proven:.4g} (interval); G is not identified"),
+        **common)
+
+
+def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
+                 confidence, bootstrap, seed, lower, upper, common):
+    slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
+    se = np.sqrt(np.maximum(np.diag(cov)[:4], 0.0))
+    to_f = 2.0 / (force * a)
+    c_g = math.pi * a**3 / 4.0  # 1/G = c_g kappa C
+    y = kappa * compliance
+    y_gradient = np.array([0.0, compliance, kappa])
+    y_se = math.sqrt(max(float(y_gradient @ cov[:3, :3] @ y_gradient), 0.0))
+    ends_at_cap = {key for key, e in ends.items() if e.at_cap and e.value is not None}
+    ts_lo, ts_hi = ends[("slip_torque", -1)].value, ends[("slip_torque", 1)].value
+    y_lo, y_hi = ends[("product", -1)].value, ends[("product", 1)].value
+    y_lo = y_lo if y_lo is not None and y_lo > KAPPA_MIN * compliance else None  # 1/G -> 0 inside: no upper G
+    c_lo, c_hi = ends[("compliance", -1)].value, ends[("compliance", 1)].value
+    notes = []
+
+    f_identified = ts_hi is not None and ts_lo is not None
+    f_assumed = next((name for name, side in (("upper", 1), ("lower", -1)) if ("slip_torque", side) in ends_at_cap),
+                     None)
+    if f_assumed:
+        notes.append(f"the {f_assumed} end of the friction interval is set by the model's bound kappa <= {KAPPA_MAX:g}")
+    if f_identified:
+        friction = Estimate(to_f * slip_torque, to_f * se[0], (to_f * ts_lo, to_f * ts_hi), assumed_end=f_assumed)
+    else:
+        bound = to_f * ts_lo if ts_lo is not None else None
+        friction = Estimate(None, None, (bound, None), identified=False, lower_bound=bound, assumed_end=f_assumed)
+    g_from = (lambda v: 1.0 / (c_g * v) if v is not None and v > 0 else None)  # noqa: E731
+    g_capped = ("product", 1) in ends_at_cap  # the lower end of G is the bound kappa <= kappa_max itself
+    g_interval = (g_from(y_hi), g_from(y_lo))
+    g_identified = f_identified and y_lo is not None and y_hi is not None and not g_capped
     if g_identified:
-        modulus = Estimate(1.0 / y, y_se / y**2, (1.0 / y_hi, 1.0 / y_lo))
-        cov_fy = float(np.array([2.0 / (force * a), 0.0, 0.0]) @ cov[:3, :3] @ gradient)
+        modulus = Estimate(1.0 / (c_g * y), y_se / (c_g * y**2), g_interval)
+        cov_fy = float(np.array([to_f, 0.0, 0.0]) @ cov[:3, :3] @ y_gradient)
+        f_se = to_f * se[0]
         correlation = -cov_fy / (f_se * y_se) if f_se > 0 and y_se > 0 else None
     else:
-        modulus = Estimate(None, None, (g_lower, None), identified=False, lower_bound=g_lower)
+        modulus = Estimate(None, None, g_interval, identified=False,
+                           lower_bound=None if g_capped else g_interval[0], assumed_end="lower" if g_capped else None)
         correlation = None
-    fitted, slope, turning = model.evaluate(full.x)[:3]
+    if c_lo is not None and c_hi is not None:
+        compliance_estimate = Estimate(compliance, float(se[2]), (c_lo, c_hi))
+    else:
+        compliance_estimate = Estimate(None, None, (c_lo, c_hi), identified=False, lower_bound=c_lo)
+
+    torque, twist = model.torque, model.twist
+    fitted, slope, turning = model.torque_at(p, twist)[:3]
     plateau_free = slope >= PLATEAU_SLOPE / compliance
     twist_residual = (torque - fitted)[plateau_free] / slope[plateau_free]
     reached = float(np.max(np.abs(np.append(turning, fitted[-1])))) / slip_torque
     regime = "gross-slip" if reached >= GROSS_SLIP_TORQUE * (1 - 1e-6) else "partial-slip" if reached > 1 else "stick"
-    message = f"slip detected ({regime}, max |T*| = {reached:.4f})"
-    # the second-order bias of the effective-variance residual, in standard errors (module docstring, "Limits")
-    knee = min(reached, KNEE_TORQUE)
-    contact = kappa * compliance * slip_torque * float(monotonic_curves().rotation(knee))
-    noise_twist = math.sqrt(scale2) * math.hypot(s_theta, compliance * s_t)
-    bending = int(np.sum((slope > 0.02 / compliance) & (slope < 0.98 / compliance)))  # the partly slipping samples
-    bias = 0.5 * noise_twist / contact * math.sqrt(bending) if contact > 0 else math.inf
-    noise_limited = bool(bias > NOISE_LIMIT)
+    message = f"slip detected ({regime}, max |T*| = {reached:.4f}; slip test {stick_test:.1f} > {stick_critical:.2f})"
+    noise_limited = not (f_identified and g_identified and compliance_estimate.identified)
+    if not f_identified:
+        message += ("; the loop is as compatible with a straight loop as the noise allows: f is not identified"
+                    + (f", only its lower bound {friction.lower_bound:.4g}" if friction.lower_bound is not None else "")
+                    + ", nor is G")
+    elif not g_identified:
+        reasons = []
+        if y_lo is None:
+            reasons.append("the profile of 1/G reaches 0 (no upper end of G)")
+        if g_capped:
+            reasons.append(f"its lower end is only the model's bound kappa <= {KAPPA_MAX:g}, i.e. G >= "
+                           f"{g_interval[0]:.4g} Pa")
+        elif y_hi is not None and g_interval[0] is not None:
+            reasons.append(f"the data give G >= {g_interval[0]:.4g} Pa")
+        if g_interval[1] is not None:
+            reasons.append(f"the data give G <= {g_interval[1]:.4g} Pa")
+        message += "; the contact's twist is not resolved from the noise: G is not identified (" + "; ".join(
+            reasons) + ")"
+    for note in notes:
+        message += "; " + note
     if noise_limited:
-        message += (f"; the twist noise ({noise_twist:.3g} rad) is large against the contact's twist "
-                    f"({contact:.3g} rad): the estimates are biased by about {bias:.1f} standard errors and the "
-                    "intervals are too narrow")
-        warnings.warn(message, NoiseLimitedFitWarning, stacklevel=2)
-    if not g_identified:
-        message += ("; the contact's twist is not resolved from the noise: G is not identified, only its lower "
-                    f"bound {g_lower:.4g} Pa" if g_lower else "; G is not identified")
+        warnings.warn(message, NoiseLimitedFitWarning, stacklevel=3)
+    n_boot = 0
+    if bootstrap:
+        from .bootstrap import bootstrap_intervals
+
+        boot = bootstrap_intervals(model, p, scale2, bootstrap, confidence, seed, lower, upper, KAPPA_MAX)
+        n_boot = int(bootstrap)
+        friction = _with_bootstrap(friction, boot["slip_torque"], to_f)
+        lo, hi = boot["product"]
+        modulus = _with_bootstrap(modulus, (g_from(hi), g_from(lo)), 1.0)
+        compliance_estimate = _with_bootstrap(compliance_estimate, boot["compliance"], 1.0)
     return LoopFit(
-        friction=Estimate(friction, f_se, _wald(friction, f_se, t_quantile)),
-        shear_modulus=modulus,
-        compliance=Estimate(float(compliance), float(se[2]), _wald(compliance, se[2], t_quantile)),
-        twist_offset=Estimate(float(offset), float(se[3]), _wald(offset, se[3], t_quantile)),
+        friction=friction, shear_modulus=modulus, compliance=compliance_estimate,
+        twist_offset=Estimate(offset, float(se[3]), _wald(offset, se[3], math.sqrt(critical))),
         correlation=correlation,
         residual_rms=float(np.sqrt(np.mean(twist_residual**2))) if twist_residual.size else math.nan,
         torque_residual_rms=float(np.sqrt(np.mean((torque - fitted) ** 2))),
-        noise_scale=math.sqrt(scale2), regime=regime, slip_detected=True, stick_test=stick_test, dof=dof,
-        noise_limited=noise_limited,
-        fitted_torque=fitted, message=message, **common)
+        noise_scale=math.sqrt(scale2), regime=regime, slip_detected=True, stick_test=stick_test,
+        stick_critical=stick_critical, noise_limited=noise_limited, interval_method="profile likelihood",
+        dof=int(model.torque.size - 4), fitted_torque=fitted, message=message, bootstrap=n_boot,
+        parameters=np.array(p, dtype=float), **common)
 
 
-def _start(model: _Model, linear, reversals, peak) -> np.ndarray:
-    """Starting parameters: the best point of a grid in (T_s, kappa), C and theta_0 from the stick fit."""
-    compliance, offset = linear
-    best, best_p = math.inf, None
-    for ratio in START_RATIOS:
-        for kappa in START_KAPPAS:
-            p = np.concatenate([[ratio * peak, kappa, compliance, offset], reversals])
-            value = float(np.sum((model.weights(p) * (model.torque - model.evaluate(p)[0])) ** 2))
-            if value < best:
-                best, best_p = value, p
-    return best_p
+def _with_bootstrap(estimate: Estimate, interval, factor: float) -> Estimate:
+    lo, hi = interval
+    scaled = (None if lo is None else factor * lo, None if hi is None else factor * hi)
+    return Estimate(estimate.value, estimate.stderr, estimate.interval, estimate.identified, estimate.lower_bound,
+                    scaled, estimate.assumed_end)

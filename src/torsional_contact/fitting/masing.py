@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Walk", "walk", "torque_along"]
+__all__ = ["Walk", "walk", "Turning", "turning_torques", "torque_along"]
 
 
 @dataclass(frozen=True)
@@ -88,21 +88,22 @@ def walk(targets) -> Walk:
                 np.array(end), np.array(first, dtype=int), np.array(count, dtype=int))
 
 
-def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobian: bool = False):
-    """Torque and slope dT/du at twists ``u`` (from the virgin state) of samples on segments ``segment``.
+@dataclass(frozen=True)
+class Turning:
+    """Torques at the turning points of a ``Walk`` (``turning_torques``) and, if asked for, their derivatives."""
 
-    ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v, and with ``jacobian`` also the
-    derivatives of F with respect to its own parameters (an (n, q) array).  A sample beyond
-    either end of its segment is evaluated on the nearest piece, continued (the branch's own
-    smooth continuation: a noisy sample next to a turning point).
+    torque: np.ndarray
+    gradient: np.ndarray | None
 
-    Returns (torque, slope, turning-point torques), and with ``jacobian`` the derivatives of the
-    torque at every sample (n, q + 1 + M) with respect to the skeleton's parameters, the twist of
-    the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
-    twists (``path.targets[:M]``; the last target only bounds the last segment).
+
+def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
+    """T_j = T(origin) + d g F(d (U_j - u_origin) / g) at the M turning points, in order [and dT_j/dparams].
+
+    ``branch`` as for ``torque_along`` (with ``jacobian``: returning the derivatives of F too).  The
+    gradient's columns: the skeleton's q parameters, the twist of the virgin state, the M turning
+    twists.
     """
     n_turning = path.targets.size - 1
-    # torques at the turning points: T_j = T(origin) + d g F(d (U_j - u_origin) / g), in order
     last = path.first[:n_turning] + path.count[:n_turning] - 1
     o = path.origin[last]
     u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
@@ -112,22 +113,8 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     turning = np.empty(n_turning)
     for j in range(n_turning):
         turning[j] = (turning[o[j]] if o[j] >= 0 else 0.0) + increments[j]
-    # the piece of every sample: the first of its segment, plus the piece ends it has passed
-    start = path.first[segment]
-    piece = start.copy()
-    heading = path.direction[start]  # every piece of a segment has its direction
-    for m in range(int(path.count.max()) - 1):  # piece ends increase along the segment
-        end = path.end[np.minimum(start + m, path.end.size - 1)]
-        piece += (path.count[segment] > m + 1) & (heading * u > heading * end)
-    origin = path.origin[piece]
-    d, g = path.direction[piece], path.g[piece]
-    known = origin >= 0
-    u_origin = np.where(known, path.targets[np.maximum(origin, 0)], 0.0)
-    t_origin = np.where(known, turning[np.maximum(origin, 0)], 0.0) if n_turning else np.zeros(u.size)
-    values = branch(d * (u - u_origin) / g)
-    torque = t_origin + d * g * values[0]
     if not jacobian:
-        return torque, values[1], turning
+        return Turning(turning, None)
     # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
     q = at_turning[2].shape[1]
     columns = q + 1 + n_turning
@@ -138,7 +125,54 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
         row[q + 1 + j] += at_turning[1][j]
         row[q + 1 + o[j] if o[j] >= 0 else q] -= at_turning[1][j]
         grad_turning[j] = row
-    jac = grad_turning[np.maximum(origin, 0)] * known[:, None] if n_turning else np.zeros((u.size, columns))
+    return Turning(turning, grad_turning)
+
+
+def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobian: bool = False,
+                 curvature: bool = False, turning: Turning | None = None):
+    """Torque and slope dT/du at twists ``u`` (from the virgin state) of samples on segments ``segment``.
+
+    ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v, and with ``jacobian`` also the
+    derivatives of F with respect to its own parameters (an (n, q) array), with ``curvature`` F''(v)
+    instead (then the fourth value returned is d^2T/du^2 = d F''(v) / g at every sample).  A sample
+    beyond either end of its segment is evaluated on the nearest piece, continued (the branch's own
+    smooth continuation: a noisy sample next to a turning point).  ``turning``: the walk's
+    ``turning_torques`` if already known (with their gradient when ``jacobian``).
+
+    Returns (torque, slope, turning-point torques), and with ``jacobian`` the derivatives of the
+    torque at every sample (n, q + 1 + M) with respect to the skeleton's parameters, the twist of
+    the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
+    twists (``path.targets[:M]``; the last target only bounds the last segment).
+    """
+    n_turning = path.targets.size - 1
+    if turning is None or (jacobian and turning.gradient is None):
+        turning = turning_torques(path, branch, jacobian)
+    # the piece of every sample: the first of its segment, plus the piece ends it has passed
+    start = path.first[segment]
+    piece = start
+    extra = int(path.count.max()) - 1
+    if extra:
+        heading = path.direction[start]  # every piece of a segment has its direction
+        count = path.count[segment]
+        piece = start.copy()
+        for m in range(extra):  # piece ends increase along the segment
+            end = path.end[np.minimum(start + m, path.end.size - 1)]
+            piece += (count > m + 1) & (heading * u > heading * end)
+    origin = path.origin[piece]
+    d, g = path.direction[piece], path.g[piece]
+    known = origin >= 0
+    where = np.maximum(origin, 0)
+    u_sample_origin = np.where(known, path.targets[where], 0.0)
+    values = branch(d * (u - u_sample_origin) / g)
+    t_origin = np.where(known, turning.torque[where], 0.0) if n_turning else 0.0
+    torque = t_origin + d * g * values[0]
+    if curvature:
+        return torque, values[1], turning.torque, d * values[2] / g
+    if not jacobian:
+        return torque, values[1], turning.torque
+    q = values[2].shape[1]
+    columns = q + 1 + n_turning
+    jac = turning.gradient[where] * known[:, None] if n_turning else np.zeros((u.size, columns))
     jac[:, :q] += (d * g)[:, None] * values[2]
     jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
-    return torque, values[1], turning, jac
+    return torque, values[1], turning.torque, jac

@@ -99,36 +99,43 @@ class Skeleton:
         self._omega = np.concatenate([[0.0], omega])
         self._t_slope = np.concatenate([[1.0], 1.0 / denominator])
         self._omega_slope = np.concatenate([[0.0], slope / denominator])
+        # each cubic in the power basis of dx = x - x_j: value + dx (c1 + dx (c2 + dx c3)), the last node's own
+        # (constant) piece appended for the points beyond it
+        self._t_coefficients = self._power_basis(self._t, self._t_slope)
+        self._omega_coefficients = self._power_basis(self._omega, self._omega_slope)
 
-    def __call__(self, x, rotation: bool = False):
-        """(T*, dT*/dx) at x, and omega_m with ``rotation``: T*, omega_m odd in x, the slope even.
+    def _power_basis(self, value, slope):
+        h = np.diff(self._x)
+        secant = np.diff(value) / h
+        c2 = (3.0 * secant - 2.0 * slope[:-1] - slope[1:]) / h
+        c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
+        return (value[:-1], slope[:-1], c2, c3)
 
-        Beyond the last node (4/3 - T* < 1e-18) T* = 4/3, its slope 0 and omega_m grows as x / kappa.
+    def __call__(self, x, rotation: bool = False, curvature: bool = False):
+        """(T*, dT*/dx) at x, and omega_m with ``rotation`` or d^2T*/dx^2 with ``curvature``: T*, omega_m and the
+        curvature odd in x, the slope even.
+
+        Beyond the last node (4/3 - T* < 1e-18) T* = 4/3, its slope and curvature 0 and omega_m grows as
+        x / kappa.  The curvature is that of the cubic pieces (continuous slopes, curvature jumps at the nodes).
         """
         x = np.asarray(x, dtype=float)
         a = np.abs(x)
         nodes = self._x
         last = nodes[-1]
-        inside = np.minimum(a, last)
-        j = np.minimum(np.searchsorted(nodes, inside, side="right") - 1, nodes.size - 2)
-        x0 = nodes[j]
-        h = nodes[j + 1] - x0
-        s = (inside - x0) / h
-        s2 = s * s
-        s3 = s2 * s
-        h01 = 3.0 * s2 - 2.0 * s3
-        h10 = (s3 - 2.0 * s2 + s) * h
-        h11 = (s3 - s2) * h
-        t0, t1, m0, m1 = self._t[j], self._t[j + 1], self._t_slope[j], self._t_slope[j + 1]
-        t = t0 + h01 * (t1 - t0) + h10 * m0 + h11 * m1
-        d01 = (6.0 * s - 6.0 * s2) / h
-        slope = d01 * (t1 - t0) + (3.0 * s2 - 4.0 * s + 1.0) * m0 + (3.0 * s2 - 2.0 * s) * m1
+        j = np.minimum(np.searchsorted(nodes, a, side="right") - 1, nodes.size - 2)
+        dx = np.minimum(a, last) - nodes[j]
+        c0, c1, c2, c3 = (c[j] for c in self._t_coefficients)
+        t = c0 + dx * (c1 + dx * (c2 + dx * c3))
+        beyond = a > last
+        # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
+        slope = np.where(beyond, 0.0, c1 + dx * (2.0 * c2 + 3.0 * dx * c3))
         sign = np.sign(x)
+        if curvature:
+            return sign * t, slope, sign * np.where(beyond, 0.0, 2.0 * c2 + 6.0 * dx * c3)
         if not rotation:
             return sign * t, slope
-        w0, w1 = self._omega[j], self._omega[j + 1]
-        omega = w0 + h01 * (w1 - w0) + h10 * self._omega_slope[j] + h11 * self._omega_slope[j + 1]
-        beyond = a > last
+        c0, c1, c2, c3 = (c[j] for c in self._omega_coefficients)
+        omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
         if beyond.any():
             extra = (a - last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)

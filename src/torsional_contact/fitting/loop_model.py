@@ -1,0 +1,273 @@
+r"""The loop model of a measured record and the samples' orthogonal distances from it.
+
+Units: torque N m, twist rad, compliance rad / (N m).
+
+The curve
+---------
+For the parameter vector p = [T_s, kappa, C, theta_0, U_1, ..., U_M] (slip-onset torque, contact
+over rig twist kappa = k / (C T_s), compliance, twist of the virgin state, twist at each reversal)
+the torque along the record is T = g(theta; p): the memory rules driven by the twist
+(``fitting.masing``) on the inverted skeleton (``fitting.skeleton``), each sample on the segment
+between reversals that its time order puts it on.  ``LoopModel.torque_at`` evaluates g, its slope
+dg/dtheta and its derivatives with respect to p at any twists of the samples.
+
+Errors in both variables
+------------------------
+Sample i is a noisy observation (T_i, theta_i) of a point (g(u_i; p), u_i) of the curve, with
+independent Gaussian noise of standard deviations s_T and s_theta.  The likelihood, maximised
+over the unknown true twists u_i (the functional model of orthogonal distance regression),
+leaves one residual per sample, its distance from the curve in noise units:
+
+    d_i^2 = min_u [(T_i - g(u))^2 / s_T^2 + (theta_i - u)^2 / s_theta^2].
+
+``LoopModel.foot_points`` finds the minimising u_i* (the foot point) by Newton steps in u (with
+the curvature g'' of the curve; Gauss-Newton's where the misfit is not convex) from the best of a
+grid of twists spanning the interval |u - theta_i| <= s_theta |T_i - g(theta_i)| / s_T that
+holds the global minimum (near a sharp bend a sample's misfit has two minima),
+vectorised over the samples, each step tried at full length and at fractions (one evaluation for
+all), each sample keeping the best that lowers its distance.
+At the foot point the residual vector is normal to the curve, so that
+
+    d_i = [T_i - g(u_i*) - g'(u_i*)(theta_i - u_i*)] / sqrt(s_T^2 + g'(u_i*)^2 s_theta^2)
+
+(the effective-variance residual evaluated at the foot point instead of the measured twist,
+which it equals to first order in the noise), and, by the envelope theorem (the derivative of
+d_i with respect to u_i* vanishes there),
+
+    dd_i / dp = -(dg / dp)(u_i*) / sqrt(s_T^2 + g'(u_i*)^2 s_theta^2).
+
+The Gram matrix of these rows is the Schur complement of the full (p, u) Fisher information,
+i.e. the covariance of p with the true twists eliminated.  Each sample keeps one degree of
+freedom (two observations, one latent twist), so that sum d_i^2 / (N - P) estimates the noise
+scale without the Neyman-Scott halving of the 2N residuals of the full problem.
+
+Turning points
+--------------
+The memory rules start every branch at a turning point (U_j, T_j), T_j = g(U_j) on the branch that
+arrives there.  The turning point is the true state of the reversal's own sample (the extreme of
+the measured twist; at the sampling rates of a loop the drive turns within half a sampling step of
+it, where the twist differs from its extreme by a second-order amount far below the noise), so
+that sample keeps both its residuals, (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta, with U_j
+in the place of its foot point.  Left free, the twists at the reversals would each give the branch
+that follows an offset of its own wherever the loop slips at its tips: extra parameters that fit
+noise (a loop in stick then showed slip in a fifth of the records).  The residual vector holds the
+N - M distances of the other samples and the 2 M residuals of the reversals, N + M in all, for
+P = 4 + M parameters: N - 4 degrees of freedom.
+
+The foot points converge quadratically (two or three steps); a sample's iteration stops when
+the next step would lower its d_i^2 by less than ``FOOT_GAIN`` (1e-8, so that the sum over the
+record is exact to far below the 0.05 of a likelihood-ratio statistic that matters), or when
+halving its step does not lower it (a foot point at a kink of the curve: a reversal, a loop
+closure, a node of the skeleton's cubic pieces).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .masing import torque_along, turning_torques, walk
+from .skeleton import Skeleton
+
+__all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
+
+#: Names of the first four parameters; the twists at the reversals follow.
+PARAMETERS = ("slip_torque", "kappa", "compliance", "twist_offset")
+#: A foot point has converged when the next Gauss-Newton step would lower its squared distance by less than this.
+FOOT_GAIN = 1e-6
+#: Newton steps at most (two or three are taken at realistic noise).
+FOOT_ITERATIONS = 12
+#: The grid of starting twists, in units of the reach of each sample's global minimum (``LoopModel._project``); it
+#: holds the measured twist (0).
+FOOT_GRID = np.linspace(-1.0, 1.0, 9)
+#: Fractions of a foot-point step tried at once; a sample keeps the best that lowers its distance.
+STEP_FRACTIONS = np.array([1.0, 0.5, 0.25, 1.0 / 16.0])
+
+
+class LoopModel:
+    """The curve T = g(theta; p) of a record and the orthogonal distances of its samples (module docstring).
+
+    Parameters
+    ----------
+    torque, twist : ndarray
+        The samples (N m, rad) in time order.
+    reversal_index : ndarray of int
+        Indices of the reversals of the twist (``samples.turning_points``).
+    torque_noise, twist_noise : float
+        Noise levels s_T (N m) and s_theta (rad): only their ratio shapes the fit; the overall
+        scale is estimated from the distances.
+    """
+
+    def __init__(self, torque, twist, reversal_index, torque_noise: float, twist_noise: float):
+        self.torque = np.asarray(torque, dtype=float)
+        self.twist = np.asarray(twist, dtype=float)
+        self.reversals = np.asarray(reversal_index, dtype=int)
+        self.segment = np.searchsorted(self.reversals, np.arange(self.twist.size), side="left")
+        last = self.segment == self.reversals.size
+        start = self.twist[self.reversals[-1]] if self.reversals.size else self.twist[0]
+        heading = np.sign(self.twist[-1] - start) or 1.0
+        self.end = float(self.twist[last].max() if heading > 0 else self.twist[last].min())
+        self.torque_noise, self.twist_noise = float(torque_noise), float(twist_noise)
+        self._curve = (None, None)
+        self._foot = (None, None)
+        self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
+        self._free[self.reversals] = False
+
+    @property
+    def size(self) -> int:
+        """Number of parameters P = 4 + M."""
+        return 4 + self.reversals.size
+
+    def _curve_of(self, p):
+        """(skeleton, walk, turning torques with their gradient, branch functions) for p, cached for the last p."""
+        p = np.asarray(p, dtype=float)
+        key = p.tobytes()
+        if self._curve[0] != key:
+            slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
+            skeleton = Skeleton(kappa)
+            path = walk(np.append(p[4:], self.end) - offset)
+            branches = _branches(skeleton, slip_torque, compliance)
+            self._curve = (key, (path, turning_torques(path, branches["jacobian"], True), branches, offset))
+        return self._curve[1]
+
+    def torque_at(self, p, twist, jacobian: bool = False, index=None, curvature: bool = False):
+        """(g, dg/dtheta, turning-point torques[, dg/dp or d^2g/dtheta^2]) at the twists ``twist`` of the samples
+        ``index``.
+
+        ``index`` (default: every sample, in order) names the samples, hence their segments.
+        """
+        path, turning, branches, offset = self._curve_of(p)
+        segment = self.segment if index is None else self.segment[index]
+        branch = branches["curvature" if curvature else "jacobian" if jacobian else "value"]
+        return torque_along(path, np.asarray(twist, dtype=float) - offset, segment, branch, jacobian, curvature,
+                            turning)
+
+    def foot_points(self, p) -> np.ndarray:
+        """The true twist u_i* of every sample: the point of the curve nearest to it in noise units."""
+        return self._project(p)[0]
+
+    def _project(self, p):
+        """(foot points, torque and slope there), cached for the last parameters."""
+        key = tuple(float(v) for v in p)
+        if self._foot[0] == key:
+            return self._foot[1]
+        s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
+        # Start from the best of a grid of twists around each sample.  The global minimum lies within
+        # s_theta sqrt(misfit at the measured twist) of it (its misfit is no larger, and the twist term alone would
+        # exceed that further out); near a sharp bend of the curve (the knee of a gross-slip loop with a small
+        # contact twist) a sample's misfit has two minima, and Newton's steps from the measured twist find the wrong
+        # one often enough to make the sum of squares jump as the parameters move.
+        n = self.twist.size
+        misfit = (self.torque - self.torque_at(p, self.twist)[0]) ** 2 / s_t2
+        reach = self.twist_noise * np.sqrt(misfit)
+        grid = (self.twist[None, :] + FOOT_GRID[:, None] * reach[None, :]).ravel()
+        g_grid, s_grid, _, c_grid = self.torque_at(p, grid, index=np.tile(np.arange(n), FOOT_GRID.size),
+                                                   curvature=True)
+        values = ((np.tile(self.torque, FOOT_GRID.size) - g_grid) ** 2 / s_t2
+                  + (np.tile(self.twist, FOOT_GRID.size) - grid) ** 2 / s_w2).reshape(FOOT_GRID.size, n)
+        best = np.argmin(values, axis=0) * n + np.arange(n)
+        u, torque, slope, second = grid[best], g_grid[best], s_grid[best], c_grid[best]
+        active = np.arange(n)
+        for _ in range(FOOT_ITERATIONS):
+            t_obs, w_obs, w = self.torque[active], self.twist[active], u[active]
+            g, s, c = torque[active], slope[active], second[active]
+            with np.errstate(over="ignore", invalid="ignore"):
+                gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
+                newton = gauss_newton - (t_obs - g) * c / s_t2  # with it: quadratic convergence where positive
+                gradient = (t_obs - g) * s / s_t2 + (w_obs - w) / s_w2  # minus half the misfit's derivative
+                step = gradient / np.where(newton > 0.1 * gauss_newton, newton, gauss_newton)
+                gain = np.nan_to_num(step * gradient, nan=0.0, posinf=0.0)  # predicted decrease of the misfit
+            keep = gain > FOOT_GAIN
+            active, t_obs, w_obs, w, step = active[keep], t_obs[keep], w_obs[keep], w[keep], step[keep]
+            if active.size == 0:
+                break
+            misfit = (t_obs - torque[active]) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2
+            # the full step and its fractions in one evaluation; each sample keeps its best if it lowers the misfit
+            trial = (w[None, :] + STEP_FRACTIONS[:, None] * step[None, :]).ravel()
+            g_trial, s_trial, _, c_trial = self.torque_at(p, trial, index=np.tile(active, STEP_FRACTIONS.size),
+                                                          curvature=True)
+            shape = (STEP_FRACTIONS.size, active.size)
+            trial_misfit = ((np.tile(t_obs, STEP_FRACTIONS.size) - g_trial) ** 2 / s_t2
+                            + (np.tile(w_obs, STEP_FRACTIONS.size) - trial) ** 2 / s_w2).reshape(shape)
+            best = np.argmin(trial_misfit, axis=0)
+            columns = np.arange(active.size)
+            lower = trial_misfit[best, columns] <= misfit
+            chosen = (best * active.size + columns)[lower]
+            moved = active[lower]
+            u[moved], torque[moved], slope[moved], second[moved] = (trial[chosen], g_trial[chosen], s_trial[chosen],
+                                                                    c_trial[chosen])
+            todo = ~lower
+            active = active[~todo]  # a sample whose step cannot lower its misfit sits at its foot point (a kink)
+            if active.size == 0:
+                break
+        self._foot = (key, (u, torque, slope))
+        return self._foot[1]
+
+    def distances(self, p, jacobian: bool = False):
+        """The residual vector (noise units) [and its Jacobian d/dp] (module docstring, "Turning points").
+
+        The signed distances d_i of the samples other than the reversals, then for each reversal j its
+        sample's torque and twist residuals against the turning point (U_j, T_j):
+        (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta.
+        """
+        u, torque, slope = self._project(p)
+        if jacobian:
+            out = self.torque_at(p, u, True)
+            torque, slope = out[:2]
+        with np.errstate(over="ignore"):
+            scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+        d = (self.torque - torque - slope * (self.twist - u)) / scale
+        path, turning = self._curve_of(p)[:2]
+        m = self.reversals.size
+        reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
+        reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
+        residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
+        if not jacobian:
+            return residual
+        jac_twist = np.zeros((m, len(p)))
+        jac_twist[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
+        return residual, np.vstack([-out[3][self._free] / scale[self._free, None],
+                                    -turning.gradient / self.torque_noise, jac_twist])
+
+    def sample_distances(self, p) -> np.ndarray:
+        """The signed distance d_i of every sample from the curve, the reversals' included (their own foot points)."""
+        u, torque, slope = self._project(p)
+        with np.errstate(over="ignore"):
+            scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+        return (self.torque - torque - slope * (self.twist - u)) / scale
+
+    def first_order_distances(self, p) -> np.ndarray:
+        """The effective-variance residuals at the measured twists (no foot points): a cheap first guess."""
+        torque, slope = self.torque_at(p, self.twist)[:2]
+        with np.errstate(over="ignore"):
+            return (self.torque - torque) / np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+
+    def linear_distances(self, compliance: float, offset: float) -> np.ndarray:
+        """Distances from the straight loop theta = theta_0 + C T (stick), exact for a line (Deming)."""
+        return (self.torque - (self.twist - offset) / compliance) / math.sqrt(
+            self.torque_noise**2 + (self.twist_noise / compliance) ** 2)
+
+
+def _branches(skeleton: Skeleton, slip_torque: float, compliance: float) -> dict:
+    """F(v) = T_s T*(v / (C T_s)) and its derivatives, for ``masing.torque_along``: "value" (F, F'), "curvature"
+    (F, F', F'') and "jacobian" (F, F', dF/d(T_s, kappa, C))."""
+    scale = compliance * slip_torque
+
+    def value(v):
+        t, slope = skeleton(v / scale)
+        return slip_torque * t, slope / compliance
+
+    def curvature(v):
+        t, slope, second = skeleton(v / scale, curvature=True)
+        return slip_torque * t, slope / compliance, second / (compliance * scale)
+
+    def jacobian(v):
+        x = v / scale
+        t, slope, omega = skeleton(x, rotation=True)
+        with np.errstate(invalid="ignore"):
+            d_kappa = np.where(slope > 0, -slip_torque * omega * slope, 0.0)
+        grad = np.column_stack([t - slope * x, d_kappa, -slip_torque * slope * x / compliance])
+        return slip_torque * t, slope / compliance, grad
+
+    return {"value": value, "curvature": curvature, "jacobian": jacobian}

@@ -1,0 +1,263 @@
+r"""Least squares on the orthogonal distances, with a parameter held fixed, and profile-likelihood intervals.
+
+Units: those of the loop model (``fitting.loop_model``): torque N m, twist rad.
+
+Constrained fits
+----------------
+A ``Constraint`` holds one function psi(p) of the parameters at a value: the slip torque T_s
+(friction f = 2 T_s / (F a)), the compliance C, or the contact twist per unit omega over T_s,
+y = kappa C = k / T_s (shear modulus: 1/G = pi a^3 y / 4).  It maps the P - 1 free parameters
+q to p and gives dp/dq, so that ``fit`` minimises S = sum d_i^2 over q with the Jacobian
+J_p dp/dq (scipy's trust-region reflective least squares, bounds included).
+
+Profile-likelihood intervals
+----------------------------
+With S_min the least sum of squares over all P parameters and s^2 = S_min / (N - P), the
+likelihood-ratio statistic of psi = psi_0 is
+
+    LR(psi_0) = (min_{psi(p) = psi_0} S - S_min) / s^2,
+
+and the interval is {psi_0 : LR(psi_0) <= F(1, N - P; level)}, the profile-likelihood interval of
+nonlinear regression (Bates and Watts, 1988, sec. 6.1).  It follows the likelihood where the Wald
+interval psi_hat +- t se assumes it quadratic: along the curved ridge of (T_s, kappa) of a
+partial-slip loop, against the bound y >= 0 (G -> infinity) and the flat profile of a loop that
+barely slips (every T_s above the largest torque is the same straight loop).  Each end is found
+by secant steps on the signed root r(psi) = +-sqrt(LR), nearly linear in psi, from the Wald end,
+each constrained fit started from the nearest profile point already computed; it stops when r is
+within ``ROOT_TOLERANCE`` of sqrt(F) (LR within 3 % of F: the interval's level within 0.3 %);
+inside a bracket by inverse quadratic interpolation, or bisection when that does not halve the bracket.
+An end beyond a parameter's limit (y = 0, or T_s above the largest torque, where the profile is
+flat) is unbounded.  A profile point below S_min means that the first fit stopped in a local
+minimum: ``BetterMinimum`` carries the point, and the caller starts again from there.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import optimize
+
+from .loop_model import LoopModel
+
+__all__ = ["Constraint", "fit", "covariance", "ProfileEnd", "profile_end", "BetterMinimum", "ROOT_TOLERANCE"]
+
+#: Relative tolerance on sqrt(LR) at an interval's end.
+ROOT_TOLERANCE = 0.015
+#: Constrained fits per end at most (well-behaved profiles take one to three); an end not pinned down by then is the
+#: outer end of its bracket (the interval errs wide), or unbounded when there is no bracket.
+MAX_PROFILE_STEPS = 8
+#: Function evaluations per least-squares fit at most (a fit from a good start takes 3-10).
+MAX_EVALUATIONS = 60
+#: The same for a constrained fit: one near the end of an interval starts close to its minimum and takes 2-6; one far
+#: outside stops early, overstating its LR statistic, which leaves it outside.
+MAX_CONSTRAINED_EVALUATIONS = 20
+#: Relative tolerances of the least-squares fits (scipy's ftol, xtol, gtol): S to 1e-6 of itself, about 4e-4 for a
+#: few hundred samples, far below the 0.02 F that decides an interval's end.
+TOLERANCE = 1e-6
+#: A profile point this far (in LR units) below the minimum is a better minimum, not rounding.
+BETTER_MINIMUM_SLACK = 0.05
+
+
+class BetterMinimum(Exception):
+    """A constrained fit found a smaller sum of squares ``s`` than the unconstrained one: restart from ``p``."""
+
+    def __init__(self, p, s):
+        super().__init__("a constrained fit found a smaller sum of squares")
+        self.p, self.s = p, s
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """psi(p) = value for psi one of "slip_torque" (p[0]), "compliance" (p[2]) or "product" (y = p[1] p[2])."""
+
+    kind: str
+    value: float
+
+    def free(self, size: int) -> np.ndarray:
+        fixed = {"slip_torque": 0, "compliance": 2, "product": 1}[self.kind]
+        return np.delete(np.arange(size), fixed)
+
+    def expand(self, q: np.ndarray, size: int) -> np.ndarray:
+        p = np.empty(size)
+        p[self.free(size)] = q
+        if self.kind == "slip_torque":
+            p[0] = self.value
+        elif self.kind == "compliance":
+            p[2] = self.value
+        else:
+            p[1] = self.value / p[2]
+        return p
+
+    def tangent(self, q: np.ndarray, size: int) -> np.ndarray:
+        """dp/dq, (P, P - 1)."""
+        free = self.free(size)
+        t = np.zeros((size, free.size))
+        t[free, np.arange(free.size)] = 1.0
+        if self.kind == "product":  # kappa = y / C: d kappa / d C = -y / C^2 (C is q[1], after T_s)
+            t[1, 1] = -self.value / q[1] ** 2
+        return t
+
+    def bounds(self, lower: np.ndarray, upper: np.ndarray, kappa_max: float):
+        free = self.free(lower.size)
+        lo, hi = lower[free].copy(), upper[free].copy()
+        if self.kind == "product":  # lower[1] <= kappa = y / C <= kappa_max: y / kappa_max <= C <= y / lower[1]
+            lo[1] = max(lo[1], self.value / min(kappa_max, upper[1]))
+            if lower[1] > 0:
+                hi[1] = min(hi[1], self.value / lower[1])
+        return lo, hi
+
+    def of(self, p) -> float:
+        return float(p[0] if self.kind == "slip_torque" else p[2] if self.kind == "compliance" else p[1] * p[2])
+
+
+def fit(model: LoopModel, start, lower, upper, constraint: Constraint | None = None, kappa_max: float = np.inf):
+    """Least squares on the orthogonal distances (all parameters, or all but the constrained one).
+
+    Returns (p, S, result) with p the full parameter vector and S = sum d_i^2.
+    """
+    size = model.size
+    if constraint is None:
+        def fun(q):
+            return model.distances(q)
+
+        def jac(q):
+            return model.distances(q, jacobian=True)[1]
+
+        lo, hi, q0 = lower, upper, np.asarray(start, dtype=float)
+    else:
+        def fun(q):
+            return model.distances(constraint.expand(q, size))
+
+        def jac(q):
+            return model.distances(constraint.expand(q, size), jacobian=True)[1] @ constraint.tangent(q, size)
+
+        lo, hi = constraint.bounds(lower, upper, kappa_max)
+        q0 = np.asarray(start, dtype=float)[constraint.free(size)]
+    q0 = np.clip(q0, lo, hi)
+    with np.errstate(invalid="ignore"):  # start exactly on a bound: least_squares nudges it inside
+        q0 = np.where(np.isfinite(hi) & (q0 >= hi), hi - 1e-12 * np.maximum(np.abs(hi), 1e-300), q0)
+    result = optimize.least_squares(fun, q0, jac=jac, bounds=(lo, hi), x_scale="jac", method="trf",
+                                    max_nfev=MAX_EVALUATIONS if constraint is None else MAX_CONSTRAINED_EVALUATIONS,
+                                    ftol=TOLERANCE, xtol=TOLERANCE, gtol=TOLERANCE)
+    p = result.x if constraint is None else constraint.expand(result.x, size)
+    return p, float(np.sum(result.fun**2)), result
+
+
+def covariance(jacobian: np.ndarray, scale2: float) -> np.ndarray:
+    """s^2 (J^T J)^+ by the SVD (a parameter without influence, e.g. a reversal in stick, gets no variance)."""
+    u, s, vt = np.linalg.svd(jacobian, full_matrices=False)
+    keep = s > s[0] * 1e-10 * math.sqrt(jacobian.shape[0])
+    return scale2 * ((vt[keep].T / s[keep] ** 2) @ vt[keep])
+
+
+@dataclass(frozen=True)
+class ProfileEnd:
+    """One end of a profile interval: ``value`` (None: unbounded), the parameters there, ``steps`` taken."""
+
+    value: float | None
+    p: np.ndarray | None
+    steps: int
+    at_cap: bool = False
+
+
+def _slope(model: LoopModel, p, kind: str) -> float:
+    """dS/dpsi along the profile: the partial derivative at the constrained minimum (envelope theorem)."""
+    d, jac = model.distances(p, jacobian=True)
+    if kind == "slip_torque":
+        column = jac[:, 0]
+    elif kind == "compliance":
+        column = jac[:, 2]
+    else:  # y = kappa C at fixed C: d kappa / d y = 1 / C
+        column = jac[:, 1] / p[2]
+    return 2.0 * float(d @ column)
+
+
+def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str, side: int, first_step: float,
+                critical: float, lower, upper, kappa_max: float, limit: float | None = None,
+                limit_lr: float | None = None, better_minimum: bool = True) -> ProfileEnd:
+    """The end of the profile interval of psi (``Constraint`` kind) on ``side`` (+1 above psi_hat, -1 below).
+
+    ``first_step`` > 0: the first trial distance from psi_hat (the Wald half-width).  ``limit``: the
+    furthest psi on this side; ``limit_lr``: the LR statistic there if known without a fit (the
+    flat profile of a slip torque above the largest torque).  An end not found within
+    ``MAX_PROFILE_STEPS`` fits is the outer end of its bracket, or unbounded (None) without one.
+    Raises ``BetterMinimum`` (with ``better_minimum``; without, a point below the minimum counts
+    as LR = 0).
+    """
+    psi_hat = Constraint(kind, 0.0).of(p_hat)
+    target = math.sqrt(critical)
+    span = abs(limit - psi_hat) if limit is not None else math.inf
+    if span <= 0 or (limit is not None and limit_lr is not None and limit_lr < critical):
+        return ProfileEnd(None, None, 0)
+    # beyond the last fitted point short of a known limit: at most 0.999 of the way (the profile is flat there)
+    reach = span if limit_lr is None else 0.999 * span
+    points = []  # (distance from psi_hat, r, dr/d distance, parameters)
+    steps = 0
+
+    def evaluate(delta):
+        nonlocal steps
+        psi = psi_hat + side * delta
+        # from the nearest point of the profile that is not far outside the interval (a fit far out may have
+        # wandered into another valley), or from the minimum
+        sane = [(0.0, 0.0, 0.0, np.asarray(p_hat, dtype=float))] + [pt for pt in points if pt[1] <= 3.0 * target]
+        start = np.array(min(sane, key=lambda pt: abs(pt[0] - delta))[3], dtype=float)
+        if kind == "slip_torque":
+            start[0] = psi
+        elif kind == "compliance":
+            start[2] = psi
+        else:
+            start[2] = max(start[2], psi / kappa_max * (1 + 1e-9))
+        p, s, _ = fit(model, start, lower, upper, Constraint(kind, psi), kappa_max)
+        steps += 1
+        lr = (s - s_min) / scale2
+        if lr < -BETTER_MINIMUM_SLACK and better_minimum:
+            raise BetterMinimum(p, s)
+        r = math.sqrt(max(lr, 0.0))
+        slope = side * _slope(model, p, kind) / scale2 / (2.0 * r) if r > 0 else 0.0  # dr/d delta
+        points.append((delta, r, slope, p))
+        return r, p
+
+    # y = kappa C beyond kappa_max C needs a larger C, which the data fix far more tightly than y: the profile rises
+    # like a wall there.  When the search reaches the bound it tries just inside: if the end lies beyond, the model's
+    # bound sets it.
+    y_cap = kappa_max * p_hat[2] * (1 - 1e-6) if kind == "product" and side > 0 else math.inf
+    if y_cap <= psi_hat:
+        return ProfileEnd(psi_hat, np.asarray(p_hat, dtype=float), 0, True)
+    reach = min(reach, y_cap - psi_hat)
+    # the Wald half-width, within 1e-3 and 0.2 of psi's scale (a degenerate covariance, a poorly determined psi: the
+    # steps grow from there); the scale of y = kappa C is its range, kappa_max C (its estimate may sit at 0)
+    scale = kappa_max * p_hat[2] if kind == "product" and math.isfinite(kappa_max) else abs(psi_hat)
+    delta = first_step if math.isfinite(first_step) else 0.1 * scale
+    delta = min(max(delta, 1e-3 * scale), 0.2 * scale, reach)
+    lo, hi = 0.0, math.inf  # the bracket: r < target at lo, r >= target at hi
+    step, last_step = math.inf, math.inf
+    while steps < MAX_PROFILE_STEPS:
+        r, p = evaluate(delta)
+        at_cap = kind != "compliance" and p[1] >= kappa_max * (1 - 1e-6)
+        if abs(r - target) <= ROOT_TOLERANCE * target:
+            return ProfileEnd(psi_hat + side * delta, p, steps, at_cap)
+        slope = points[-1][2]
+        if r < target:
+            lo = delta
+            if delta >= reach:  # the limit (or the bound on kappa) itself lies inside the interval
+                return ProfileEnd(None, None, steps) if y_cap == math.inf else ProfileEnd(y_cap, p, steps, True)
+        else:
+            hi = delta
+        newton = delta + (target - r) / slope if slope > 0 else math.nan
+        if hi < math.inf:  # bracketed: Newton's step when it stays inside and shrinks fast enough, else bisection
+            if lo < newton < hi and abs(newton - delta) < 0.5 * last_step:
+                last_step, step = step, abs(newton - delta)
+                delta = newton
+            else:
+                last_step, step = step, 0.5 * (hi - lo)
+                delta = lo + step
+        else:  # Newton from the last point, growing by 1.25 to 4 times
+            grow = newton if math.isfinite(newton) else math.inf
+            delta = min(min(max(grow, 1.25 * delta), 4.0 * delta), reach)
+    if hi < math.inf:  # the outer end of the bracket: the interval errs wide
+        outer = min((pt for pt in points if pt[0] == hi), key=lambda pt: pt[1])
+        return ProfileEnd(psi_hat + side * hi, outer[3], steps, kind != "compliance"
+                          and outer[3][1] >= kappa_max * (1 - 1e-6))
+    return ProfileEnd(None, None, steps)
