@@ -118,6 +118,31 @@ def test_numbers_in_the_manuscript_are_typeset_not_programmer_notation(built):
     assert not offenders, offenders
 
 
+def _cells_outside_math(text: str):
+    """Table cells (split at & and \\\\) with a \\times or a superscript outside $...$."""
+    for cell in re.split(r"&|\\\\", text):
+        outside = re.sub(r"\$[^$]*\$", "", cell)
+        if "\\times" in outside or "^{" in outside:
+            yield cell.strip()
+
+
+def test_table_numbers_in_scientific_notation_are_in_math_mode(built):
+    offenders = [f"{table.name}: {cell}" for table in (built / "tables").glob("*.tex")
+                 for cell in _cells_outside_math(table.read_text())]
+    assert not offenders, offenders
+
+
+def test_half_space_table_entries_are_in_math_mode():
+    """Every magnitude the half-space table prints, scientific notation included (a small value at the default
+    configuration once stopped LaTeX with 'Missing $ inserted')."""
+    spec = importlib.util.spec_from_file_location("half_space_table", ROOT / "workflow/scripts/half_space_table.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    for value in (5.436e-3, 0.0359, 3.691, 2.5e4, -1e-7):
+        assert not list(_cells_outside_math(module._num(value))), module._num(value)
+    assert not list(_cells_outside_math("$5.4\\times10^{-3}$")) and list(_cells_outside_math("5.4\\times10^{-3}"))
+
+
 def test_notebooks_are_executed_with_figures_inline_and_the_report_lists_the_figures(built):
     nbformat = pytest.importorskip("nbformat")
     for notebook in (ROOT / "notebooks").glob("*.py"):

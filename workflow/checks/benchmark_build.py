@@ -183,7 +183,9 @@ def benchmark_build(checkout: Path, configfile: str, scratch: Path) -> dict:
     try:
         wall, cpu, status = timed(command, checkout, env, scratch / "snakemake.log")
         if status != 0:
-            raise SystemExit(f"benchmark_build: the build failed (status {status}); see {scratch / 'snakemake.log'}")
+            kept = checkout / "results" / "benchmark_build-failed.log"  # the scratch folder goes with the exit
+            shutil.copyfile(scratch / "snakemake.log", kept)
+            raise SystemExit(f"benchmark_build: the build failed (status {status}); Snakemake's log: {kept}")
         rules = rules_of_logs(checkout, since)
     finally:
         shutil.rmtree(outdir, ignore_errors=True)

@@ -41,7 +41,7 @@ def _num(x: float, digits: int = 3) -> str:
     """A table entry: 0, a decimal or scientific notation; +inf (no finite fit) as an en dash."""
     if math.isinf(x):
         return "--"
-    return "0" if x == 0 else sci(x, digits)
+    return "0" if x == 0 else f"${sci(x, digits)}$"  # math mode: sci may give a \times10^{..}
 
 
 def example(radius, normal_force, shear_modulus, friction, torque_range) -> dict:
