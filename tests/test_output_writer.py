@@ -508,6 +508,8 @@ def test_save_figure_through_the_writer(tmp_path):
 SCRATCH_WRITES = {
     ("build_report.py", 'open(configfile, "w"'),  # the configuration handed to snakemake, in a TemporaryDirectory
     ("benchmark_histories.py", "open(files[name], \"wb\")"),  # benchmark inputs, in a TemporaryDirectory
+    ("benchmark_build.py", "shim.write_text("),  # the timing wrappers, in a TemporaryDirectory
+    ("benchmark_build.py", 'open(log, "w")'),  # Snakemake's and the suite's logs, in the same TemporaryDirectory
 }
 DIRECT_WRITE = re.compile(r"open\([^)]*[\"'][wax]b?\+?[\"']|\.savefig\(|np\.save(txt|z)?\(|\.to_csv\(|"
                           r"os\.(replace|rename)\(|shutil\.(move|copy\w*)\(|\.write_(text|bytes)\(|json\.dump\(")

@@ -183,9 +183,10 @@ def benchmark_build(checkout: Path, configfile: str, scratch: Path) -> dict:
     try:
         wall, cpu, status = timed(command, checkout, env, scratch / "snakemake.log")
         if status != 0:
-            kept = checkout / "results" / "benchmark_build-failed.log"  # the scratch folder goes with the exit
-            shutil.copyfile(scratch / "snakemake.log", kept)
-            raise SystemExit(f"benchmark_build: the build failed (status {status}); Snakemake's log: {kept}")
+            tail = "\n".join((scratch / "snakemake.log").read_text(errors="replace").splitlines()[-40:])
+            # the scratch folder goes with the exit: the end of Snakemake's log is printed instead
+            raise SystemExit(f"{tail}\nbenchmark_build: the build failed (status {status}); the end of Snakemake's "
+                             "log is above")
         rules = rules_of_logs(checkout, since)
     finally:
         shutil.rmtree(outdir, ignore_errors=True)

@@ -90,8 +90,7 @@ def scenario_record(rig, scenario, draws, cycles, samples_per_cycle, rng):
            "torque_noise": torque_noise, "torque_noise_fraction": scenario["torque_noise"],
            "twist_noise": scenario["twist_noise"],
            "max_torque_ratio": float(np.max(np.abs(torque)) / rig.slip_torque), "draws": draws,
-           "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws),
-           "cpu_seconds_per_fit": cpu / draws}
+           "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws)}
     for key in truth:
         out[key] = summary(outcomes[key], draws)
     print(f"{scenario['name']}: {cpu:.2f} CPU-s", flush=True)  # the log, not the data

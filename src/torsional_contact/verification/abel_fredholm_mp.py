@@ -214,7 +214,7 @@ class _ShearProxy:
         self.work_digits = state.work_digits
         self.step = flint.arb(10) ** (-(state.work_digits // 3))
 
-    def _d_function(self, t_points) -> list:
+    def _d_function(self, t_points, psi_points) -> list:
         """t E(t) = t D'(t) - D(t) with D' = -D_psi / sin(psi), D_psi by central differences in psi = arccos t.
 
         D is analytic in psi on [0, arccos b] (the corner's (1 - t)^(3/2) terms are odd powers of
@@ -222,10 +222,10 @@ class _ShearProxy:
         10^(-W) / h ~ 10^(-2 W/3) at W working digits.
         """
         h = self.step
-        psi = [t.acos() for t in t_points]
-        d = self.state._d_function(t_points)  # noqa: SLF001 - the reference's own D of (F7)
-        plus = self.state._d_function([(p + h).cos() for p in psi])  # noqa: SLF001
-        minus = self.state._d_function([(p - h).cos() for p in psi])  # noqa: SLF001
+        psi = list(psi_points)  # t = cos(psi); the shifted angles as arccos(cos(psi +- h)) = |psi +- h|
+        d = self.state._d_function(t_points, psi)  # noqa: SLF001 - the reference's own D of (F7)
+        plus = self.state._d_function([(p + h).cos() for p in psi], [abs(p + h) for p in psi])  # noqa: SLF001
+        minus = self.state._d_function([(p - h).cos() for p in psi], [abs(p - h) for p in psi])  # noqa: SLF001
         out = []
         for t, p, dv, dp, dm in zip(t_points, psi, d, plus, minus, strict=True):
             d_psi = (dp - dm) / (2 * h)
