@@ -282,7 +282,7 @@ def test_slip_test_false_alarm_rate():
     assert _false_alarms(40, 1.5, 80, 21) <= _most_alarms(40)
 
 
-@pytest.mark.slow
+@pytest.mark.sweep  # a statistical sweep (about a minute): CI runs it (.ci/run), the README's test command does not
 def test_slip_test_false_alarm_rate_over_many_records():
     """300 full records (2 cycles of 200 samples): at most 26 alarms (8.7 %; more has probability < 0.3 % at 5 %)."""
     assert _false_alarms(300, 2, 200, 22) <= _most_alarms(300)
@@ -394,7 +394,7 @@ def test_coverage_of_a_gross_slip_loop():
         assert abs(rate - 0.95) <= _coverage_band(40), (key, rate)
 
 
-@pytest.mark.slow
+@pytest.mark.sweep  # a statistical sweep (a minute or two): CI runs it (.ci/run), the README's test command does not
 @pytest.mark.parametrize("scenario", [("torque", 1.3, 0.005, 1e-5), ("torque", 1.3, 0.001, 1e-6),
                                       ("twist", 2.5e-3, 0.005, 1e-5)],
                          ids=["partial-slip", "partial-slip-quiet", "gross-slip"])

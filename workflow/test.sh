@@ -8,8 +8,9 @@ ruff check src tests workflow notebooks
 # count.  The tests do not depend on the pin: workflow/checks/fp_variants.py runs them with one and two threads
 # and with numpy's SIMD dispatch at its baseline (CI runs two of those variants after this command).
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
-# every tier (the slow one too: end-to-end builds), on two workers; the workflow tests share one
+# the fast and slow tiers (the slow one: end-to-end builds), on two workers (the statistical sweeps run in CI:
+# .ci/run); the workflow tests share one
 # worker (xdist group) because their builds share results/ci and Snakemake's lock
 start=$(date +%s)
-python -m pytest -p no:cacheprovider -q -n 2 --dist loadgroup -m "slow or not slow" "$@"
+python -m pytest -p no:cacheprovider -q -n 2 --dist loadgroup -m "not sweep" "$@"
 echo "test: suite finished in $(( $(date +%s) - start )) s" >&2
