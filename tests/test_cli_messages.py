@@ -7,30 +7,16 @@ import contextlib
 import io
 import json
 import math
-import sys
 import warnings
 
 import numpy as np
 import pytest
+from cli_runner import run_in_process as run
 
 import torsional_contact as tc
 from torsional_contact.diagnostics import ResolutionWarning
-from torsional_contact.io.cli import MAX_REFERENCE_TERMS, build_parser, main
+from torsional_contact.io.cli import MAX_REFERENCE_TERMS, build_parser
 from torsional_contact.io.signal_files import read_signal
-
-
-def print_warning(message, category, filename, lineno, file=None, line=None):
-    """Python's own way of showing a warning (to sys.stderr, through warnings.formatwarning), not pytest's."""
-    sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
-
-
-def run(argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), warnings.catch_warnings():
-        warnings.simplefilter("always")
-        warnings.showwarning = print_warning
-        status = main(argv)
-    return status, out.getvalue(), err.getvalue()
 
 
 def help_text(*argv) -> str:

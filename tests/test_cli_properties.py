@@ -20,7 +20,6 @@ from __future__ import annotations
 import contextlib
 import errno
 import hashlib
-import io
 import json
 import os
 import shutil
@@ -31,13 +30,11 @@ import sys
 import tempfile
 import threading
 import time
-import warnings
 
 import pytest
+from cli_runner import run_in_process
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
-from torsional_contact.io.cli import main
 
 IS_ROOT = os.geteuid() == 0
 PROFILES = {"fast": 40, "ci": 600}
@@ -92,21 +89,6 @@ class FifoReader(threading.Thread):
             self.join(timeout=0.05)
         assert not self.is_alive()
         return self.data
-
-
-def print_warning(message, category, filename, lineno, file=None, line=None):
-    """Python's own way of showing a warning (to sys.stderr, through warnings.formatwarning), not pytest's."""
-    sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
-
-
-def run_in_process(argv) -> tuple[int, str, str]:
-    """``main(argv)`` with captured standard output and error; an escaping exception fails the test."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), warnings.catch_warnings():
-        warnings.simplefilter("always")
-        warnings.showwarning = print_warning
-        status = main(argv)
-    return status, out.getvalue(), err.getvalue()
 
 
 def check_streams(status: int, out: str, err: str, *, must_name: str | None = None) -> None:
