@@ -30,9 +30,10 @@ from tolerances import (
 from torsional_contact import ResolutionWarning, solve
 from torsional_contact.criteria import spinning_deficit
 from torsional_contact.curves import loading_work, monotonic_curves
+from torsional_contact.curves._precompute.build_table import CURVES as TABULATED
+from torsional_contact.curves._precompute.build_table import lobatto_coefficients, panel_edges
 from torsional_contact.curves.interpolant import ONSET_DELTA
-from torsional_contact.curves.table import CURVES as TABULATED
-from torsional_contact.curves.table import lobatto_coefficients, panel_edges, read_table
+from torsional_contact.curves.table import read_table
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle, threshold_asymptotics
 from torsional_contact.quadrature import gauss_legendre_panels
 from torsional_contact.solvers.abel_fredholm import solve_fast
@@ -60,7 +61,7 @@ def _radii_off_nodes(per_panel: int, seed: int) -> np.ndarray:
 
 
 def _table_bound(name: str, b: float) -> float:
-    """Truncation bound of the tabulated curve ``name`` at b, from the table's construction (``curves.table``).
+    """Truncation bound of the tabulated curve ``name`` at b, from the table's construction (its builder).
 
     On its panel the series keeps the coefficients above the chop tolerance (absolute + relative x the largest
     value on the panel) or the panel's recorded tail where it did not converge; each of the at most ``points``

@@ -10,6 +10,10 @@ the shell reports for a command that SIGPIPE killed).  Files named on the comman
 written by ``io.output`` (regular files atomically, symbolic links through, FIFOs and devices
 in place; never over an input).
 
+Optional packages: the subcommands ``reference`` and ``errata`` need the ``reference`` extra
+(mpmath, python-flint); without it they exit with status 2 and one line naming the pip
+command that installs it (``extras``).
+
 Numbers: every subcommand's parser (``_Parser``) takes negative numbers in any form,
 -1, -.5, -1e-1, -1E+3 (argparse alone reads "-1e-1" as an option), and the number
 options use ``real_argument`` as their type, so that "nan", "inf" and non-numbers are
@@ -30,7 +34,7 @@ import warnings
 
 import numpy as np
 
-from .. import __version__
+from .. import __version__, extras
 from ..models import DEFAULT_MODEL, MODELS
 from ..solution import DEFAULT_N_TERMS, METHODS, solve
 from ..solvers.weak_form import METHODS as SERIES_METHODS
@@ -201,6 +205,7 @@ def _cmd_reference_fast(args) -> dict:
 
 
 def _cmd_reference(args) -> dict:
+    extras.require("reference", "the reference subcommand")
     import mpmath
 
     from .. import validation
@@ -236,6 +241,7 @@ def _cmd_reference(args) -> dict:
 
 
 def _cmd_errata(args) -> list:
+    extras.require("reference", "the errata subcommand")
     from ..verification.errata import errata_table
 
     return errata_table()
@@ -395,8 +401,14 @@ def main(argv=None) -> int:
                 _quiet_standard_output()
                 return 141
             return _error(exc if exc.filename is not None else (exc.strerror or exc))
-        except (UsageError, ValueError) as exc:
+        except (UsageError, ValueError, extras.MissingExtraError) as exc:
             return _error(exc)
+        except ModuleNotFoundError as exc:  # an optional package a subcommand needs: name the extra
+            extra = extras.extra_for(exc.name or "")
+            if extra is None:
+                raise
+            return _error(f"{args.command} needs the optional package {exc.name}, not installed: "
+                          f"{extras.install_hint(extra)}")
         try:
             _print_result(args, result)
         except OSError as exc:
