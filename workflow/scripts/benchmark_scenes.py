@@ -11,10 +11,10 @@ import argparse
 import warnings
 
 import numpy as np
+from _timing import interleaved, machine, paired_ratio
 
 from torsional_contact import TruncationWarning, solve
 from torsional_contact.fields import dini_terms
-from torsional_contact.io.timing import interleaved, machine, paired_ratio
 from torsional_contact.provenance import latex_escape, write_json, write_macros, write_text
 
 TABLE_TOLERANCE = 1e-12

@@ -14,10 +14,10 @@ import argparse
 import warnings
 
 import numpy as np
+from _timing import format_ratio, format_seconds, interleaved, machine, paired_ratio
 
 from torsional_contact import fields, solve
 from torsional_contact.diagnostics import TorsionalContactWarning
-from torsional_contact.io.timing import format_ratio, format_seconds, interleaved, machine, paired_ratio
 from torsional_contact.provenance import latex_escape, write_json, write_macros
 from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
 from torsional_contact.solvers.weak_form import solve_series

@@ -6,9 +6,9 @@ truncated at the plot tolerance (default 1e-4 of f p0).
 
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 LABELS = {
     "sigma_zt": r"$\sigma_{\theta z}/f p_0$",

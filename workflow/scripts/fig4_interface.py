@@ -3,9 +3,9 @@
 
 
 import numpy as np
+from _plotting import figure_parser, method_label, plt, save_figure, use_style
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, method_label, plt, save_figure, use_style
 
 LABELS = {
     "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",

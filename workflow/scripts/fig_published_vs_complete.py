@@ -13,11 +13,11 @@ Values outside a panel's range are drawn at its edge with a triangle marker.
 import warnings
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact import solve
 from torsional_contact.backends import Series
 from torsional_contact.diagnostics import UnphysicalResultWarning
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 from torsional_contact.solvers.weak_form import solve_series
 
 #: Smallest difference drawn in the lower panels (below it: rounding of the converged solution).

@@ -2,9 +2,8 @@
 twisted by T (side view), and the interface: stick disc r < b, slip annulus b < r < a (plan view)."""
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 from matplotlib import patches
-
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def side_view(ax):

@@ -12,7 +12,7 @@ import os
 
 import matplotlib.pyplot as plt
 
-from ..provenance import atomic_path
+from torsional_contact.provenance import atomic_path
 
 __all__ = ["use_style", "save_figure", "figure_parser", "load_data", "method_label", "plt"]
 
