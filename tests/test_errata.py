@@ -28,7 +28,7 @@ from torsional_contact.verification.errata import (
     settings,
     solution_e,
 )
-from torsional_contact.verification.quadrature import gauss_legendre
+from torsional_contact.verification.quadrature_mp import gauss_legendre
 
 ROOT = Path(__file__).resolve().parents[1]
 

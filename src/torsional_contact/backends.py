@@ -33,7 +33,7 @@ from scipy import special
 
 from . import asymptotics
 from .fields import dini_terms
-from .solvers.abel_fredholm import FastSolution
+from .solvers.abel_fredholm import AbelFredholmSolution
 from .solvers.weak_form import SeriesSolution
 from .special.zeros import bessel_j2_zeros
 
@@ -125,7 +125,7 @@ class AbelFredholm(_Scalars):
     fixes them.
     """
 
-    solution: FastSolution
+    solution: AbelFredholmSolution
     n_terms: int | None = None
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
     dini_is_truncation = True
@@ -139,7 +139,7 @@ class AbelFredholm(_Scalars):
     def sigma_rt(self, r):
         """du/dr - u/r of the interface displacement (0 on the stick disc and at r = 1, eq. 9).
 
-        ``FastSolution.interface_sigma_rt``: quadratures of (F7) for every stick radius, no
+        ``AbelFredholmSolution.interface_sigma_rt``: quadratures of (F7) for every stick radius, no
         differences (they were used for b >= 1/2 before: ~1e-9, ~1e-5 next to r = 1).
         """
         return self.solution.interface_sigma_rt(r)

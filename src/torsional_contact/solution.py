@@ -48,7 +48,7 @@ from .backends import AbelFredholm, Asymptotic, Bilateral, Series, Spinning
 from .criteria import GROSS_SLIP_TORQUE
 from .diagnostics import TruncationWarning, UnphysicalResultWarning
 from .inverse import invert_abel_fredholm, invert_series
-from .solvers.abel_fredholm import solve_fast
+from .solvers.abel_fredholm import solve_abel_fredholm
 from .solvers.weak_form import MAX_SERIES_TERMS, minimum_inverse_terms, solve_series
 from .solvers.weak_form import METHODS as SERIES_METHODS
 
@@ -255,13 +255,13 @@ def _for_stick_radius(b: float, method: str, n_terms) -> tuple:
 def _fast_backend(b: float, n_terms, solution=None):
     """The default method at 0 <= b < 1: Abel-Fredholm between the switches of ``asymptotics``."""
     if b == 0.0:
-        return Spinning(solve_fast(0.0), n_terms)
+        return Spinning(solve_abel_fredholm(0.0), n_terms)
     if b < asymptotics.SPINNING_SWITCH:
         return Asymptotic(asymptotics.small_stick_disc(b), n_terms)
     delta = 1.0 - b
     if delta < asymptotics.ONSET_FIELDS:
         return Asymptotic(asymptotics.edge_crack(b), n_terms)
-    solution = solve_fast(b) if solution is None else solution
+    solution = solve_abel_fredholm(b) if solution is None else solution
     if delta < asymptotics.ONSET_SCALARS:  # (S1), (S2): exact to rounding, the solver to ~1e-12
         torque = float(asymptotics.onset_torque(delta))
         solution = dataclasses.replace(

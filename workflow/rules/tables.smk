@@ -152,7 +152,7 @@ rule benchmark_histories:
         # the script times the ``history`` subcommand in subprocesses: the command line's entry
         # points and what that subcommand loads (not the lazily imported reference or errata)
         cli=["src/torsional_contact/__main__.py", "src/torsional_contact/io/cli.py",
-             "src/torsional_contact/io/history_signal.py", *lib("src/torsional_contact/io/history_signal.py")],
+             "src/torsional_contact/io/history_command.py", *lib("src/torsional_contact/io/history_command.py")],
     output:
         json=f"{OUT}/data/benchmark_histories.json",
         macros=f"{OUT}/macros/benchmark_histories.tex",

@@ -8,6 +8,6 @@ builder, ``_precompute.build_table``, runs at build time only (``python -m torsi
 """
 
 from .interpolant import MonotonicCurves, monotonic_curves
-from .work import loading_work
+from .work import abel_fredholm_loading_work
 
-__all__ = ["MonotonicCurves", "monotonic_curves", "loading_work"]
+__all__ = ["MonotonicCurves", "monotonic_curves", "abel_fredholm_loading_work"]

@@ -109,7 +109,7 @@ from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
 from ..models import DEFAULT_MODEL, monotonic_model
 from ..solution import Solution
-from .monotonic import DEFAULT_METHOD, monotonic
+from .monotonic import DEFAULT_METHOD, monotonic_solution
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -117,7 +117,7 @@ __all__ = [
     "TurningPoint",
     "InterfaceState",
     "initial_state",
-    "monotonic",
+    "monotonic_solution",
     "advance",
     "history",
     "turning_points",

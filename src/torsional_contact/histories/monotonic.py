@@ -28,7 +28,7 @@ from ..curves import monotonic_curves
 from ..quadrature import gauss_legendre_panels
 from ..solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve
 
-__all__ = ["DEFAULT_METHOD", "resolve", "monotonic", "register", "point", "points", "series_loading_work",
+__all__ = ["DEFAULT_METHOD", "resolve", "monotonic_solution", "register", "point", "points", "series_loading_work",
            "CylinderMonotonic"]
 
 _ONSET_ULPS = 8
@@ -74,7 +74,7 @@ def register(solution: Solution, tau: float | None = None) -> float:
     return tau
 
 
-def monotonic(tau, *, method=None, n_terms=None) -> Solution:
+def monotonic_solution(tau, *, method=None, n_terms=None) -> Solution:
     """mono(tau): the monotonic solution at torque 0 <= tau <= 4/3, friction limit 1 (cached)."""
     tau = validation.torque("tau", tau)
     if tau < 0:
@@ -138,4 +138,4 @@ class CylinderMonotonic:
         return points(tau, self.method, self.n_terms)
 
     def solution(self, tau) -> Solution:
-        return monotonic(tau, method=self.method, n_terms=self.n_terms)
+        return monotonic_solution(tau, method=self.method, n_terms=self.n_terms)

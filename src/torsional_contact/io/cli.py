@@ -128,7 +128,7 @@ def _cmd_history(args):
     """``history``: states at the given turning points, or the analysis of a sampled signal (``--signal``)."""
     from .. import validation
     from ..histories import history
-    from .history_signal import analyse_file
+    from .history_command import analyse_file
 
     specimen = cli_units.specimen_from(args)
     if specimen is not None:

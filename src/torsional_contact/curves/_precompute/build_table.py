@@ -39,10 +39,10 @@ import numpy as np
 
 from ...diagnostics import ResolutionWarning
 from ...provenance import atomic_path, provenance
-from ...solvers.abel_fredholm import MAX_NODES, default_nodes, solve_fast
+from ...solvers.abel_fredholm import MAX_NODES, default_nodes, solve_abel_fredholm
 from ..interpolant import CURVES_BY_TORQUE, U_SPLIT_RADIUS, MonotonicCurves
 from ..table import FORMAT, TABLE_PATH
-from ..work import loading_work
+from ..work import abel_fredholm_loading_work
 
 __all__ = ["B_LOW", "CURVES", "panel_edges", "largest_resolved_radius", "lobatto_coefficients", "build_table",
            "add_by_torque", "write_table", "main"]
@@ -101,8 +101,8 @@ def lobatto_coefficients(values: np.ndarray) -> np.ndarray:
 def _sample(b: float) -> tuple[float, float, float, float]:
     with warnings.catch_warnings():  # the tail check near b_max; accuracy is measured against the table
         warnings.simplefilter("ignore", ResolutionWarning)
-        solution = solve_fast(b)
-    return solution.torque, solution.torque_deficit, solution.rigid_rotation, loading_work(solution)
+        solution = solve_abel_fredholm(b)
+    return solution.torque, solution.torque_deficit, solution.rigid_rotation, abel_fredholm_loading_work(solution)
 
 
 def _converged(coefficients: np.ndarray, values: np.ndarray, tolerance: tuple[float, float]) -> bool:

@@ -15,7 +15,7 @@ from ...special import integrals
 from ...special.zeros import bessel_j2_zeros
 from ...typeset import fixed, sci
 from .. import weak_form_mp as mp_forms
-from ..quadrature import GL_POINTS, Nodes
+from ..quadrature_mp import GL_POINTS, Nodes
 from .rules import formula_rule, threshold
 from .settings import HAZARD_DIGITS_KEPT, N_DINI, N_PAPER, WORK_DPS
 from .verdicts import entry, relative_difference, verdict_formula

@@ -12,7 +12,7 @@ from __future__ import annotations
 import functools
 
 from ...solution import solve
-from ...solvers.abel_fredholm import solve_fast
+from ...solvers.abel_fredholm import solve_abel_fredholm
 
 __all__ = ["exact", "exact_amplitudes"]
 
@@ -26,6 +26,6 @@ def exact(stick_radius: float):
 @functools.lru_cache(maxsize=16)
 def exact_amplitudes(stick_radius: float, n_terms: int):
     """Dini amplitudes c_1..c_n of the Abel-Fredholm solution (read-only array)."""
-    amplitudes = solve_fast(stick_radius).dini_amplitudes(n_terms)
+    amplitudes = solve_abel_fredholm(stick_radius).dini_amplitudes(n_terms)
     amplitudes.setflags(write=False)
     return amplitudes

@@ -14,7 +14,7 @@ from ...special import integrals
 from ...special.zeros import bessel_j2_zeros
 from ...typeset import fixed, sci
 from .. import weak_form_mp as mp_forms
-from ..quadrature import Nodes
+from ..quadrature_mp import Nodes
 from ..reference import solve_reference
 from .rules import CLOSURE_TAG, CLOSURE_TAG_LATEX, TRUTH, formula_rule, threshold
 from .settings import CONSISTENCY_FACTOR, N_CONVERGED, N_PAPER, NEGLIGIBLE_CHANGE, WORK_DPS
