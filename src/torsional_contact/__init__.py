@@ -24,7 +24,7 @@ except _metadata.PackageNotFoundError:  # pragma: no cover - running from a sour
 
 #: public name -> submodule that defines it
 _EXPORTS = {
-    "solve": "solution",
+    "solve": "dispatch",
     "Solution": "solution",
     "torque_curve": "solution",
     "METHODS": "solution",

@@ -115,7 +115,7 @@ def invert_series(target: float, method: str, n_terms: int) -> SeriesSolution:
             f"torque={target:.12g} needs a stick disc smaller than n_terms={n_terms} resolves "
             f"(b < {b_lo:.3g}); the stick radius and fields are inaccurate",
             ResolutionWarning,
-            stacklevel=4,
+            stacklevel=5,  # solve -> the method class (backends) -> here
         )
     b = optimize.brentq(residual, lower, 1.0, xtol=B_TOLERANCE, rtol=_RELATIVE_TOLERANCE)
     if lower == b_lo:  # otherwise the warning above has been given

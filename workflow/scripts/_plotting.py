@@ -12,6 +12,7 @@ import os
 
 import matplotlib.pyplot as plt
 
+from torsional_contact.backends import METHODS
 from torsional_contact.provenance import atomic_path
 
 __all__ = ["use_style", "save_figure", "figure_parser", "load_data", "method_label", "plt"]
@@ -69,4 +70,5 @@ METHOD_LABELS = {"fast": "Abel-Fredholm", "complete": "complete weak form", "pub
 def method_label(solution) -> str:
     """The method of a ``Solution`` as figures name it, with N for the weak forms."""
     name = METHOD_LABELS.get(solution.method, solution.method)
-    return name if solution.method == "fast" or solution.n_terms is None else f"{name}, N = {solution.n_terms}"
+    truncated = METHODS[solution.method].truncated
+    return f"{name}, N = {solution.n_terms}" if truncated and solution.n_terms is not None else name

@@ -35,9 +35,10 @@ import warnings
 import numpy as np
 
 from .. import __version__, extras
+from ..backends import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS
+from ..dispatch import solve
 from ..models import DEFAULT_MODEL, MODELS
-from ..solution import DEFAULT_N_TERMS, METHODS, solve
-from ..solvers.weak_form import METHODS as SERIES_METHODS
+from ..solvers.weak_form import WEAK_FORMS
 from . import cli_units
 
 __all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS",
@@ -179,10 +180,6 @@ def _decimal_radius(name: str, text: str) -> str:
     return text.strip()
 
 
-#: The methods of ``reference``: the weak forms (truncated) and "fast", the converged solution.
-REFERENCE_METHODS = (*SERIES_METHODS, "fast")
-
-
 def _cmd_reference_fast(args) -> dict:
     """``reference --method fast``: the converged solution (Abel-Fredholm method in arbitrary precision)."""
     from ..verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm
@@ -204,16 +201,14 @@ def _cmd_reference_fast(args) -> dict:
     return record
 
 
-def _cmd_reference(args) -> dict:
-    extras.require("reference", "the reference subcommand")
+def _cmd_reference_weak_form(args) -> dict:
+    """``reference --method published|complete``: the truncated weak form in arbitrary precision."""
     import mpmath
 
     from .. import validation
     from ..verification.reference import solve_reference
 
-    method = validation.choice("--method", args.method, REFERENCE_METHODS)
-    if method == "fast":
-        return _cmd_reference_fast(args)
+    method = args.method
     if args.radii is not None:
         raise UsageError("--radii is only available with --method fast")
     text = _decimal_radius("--stick-radius", args.stick_radius)
@@ -240,6 +235,18 @@ def _cmd_reference(args) -> dict:
     }
 
 
+#: The methods of ``reference`` (arbitrary precision): the weak forms (truncated) and "fast", the converged
+#: solution of the Abel-Fredholm method; name -> handler.
+REFERENCE_METHODS = {**dict.fromkeys(WEAK_FORMS, _cmd_reference_weak_form), "fast": _cmd_reference_fast}
+
+
+def _cmd_reference(args) -> dict:
+    extras.require("reference", "the reference subcommand")
+    from .. import validation
+
+    return REFERENCE_METHODS[validation.choice("--method", args.method, REFERENCE_METHODS)](args)
+
+
 def _cmd_errata(args) -> list:
     extras.require("reference", "the errata subcommand")
     from ..verification.errata import errata_table
@@ -254,7 +261,8 @@ NULL_EPILOG = ("JSON has no infinity: a number that is not finite prints as null
 
 def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii, --model: shared by the subcommands that call ``solve``."""
-    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: fast, the most accurate)")
+    p.add_argument("--method", default=None,
+                   help=f"one of {', '.join(METHODS)} (default: {DEFAULT_METHOD}, the most accurate)")
     p.add_argument("--n-terms", type=int, default=None,
                    help=f"published and complete weak forms: number of eigenfunctions (default {DEFAULT_N_TERMS}); "
                    "not used by the default method (fast: the interface values need no truncation)")

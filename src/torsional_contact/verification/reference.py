@@ -51,7 +51,7 @@ from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
 from ..provenance import write_json
-from ..solvers.weak_form import METHODS, resolution_limit, terms_to_resolve
+from ..solvers.weak_form import WEAK_FORMS, resolution_limit, terms_to_resolve
 from .arbitrary_precision import backend as default_backend
 from .arbitrary_precision import parse_decimal, solve_linear
 from .weak_form_mp import assemble, j2_zeros
@@ -196,7 +196,7 @@ def solve_reference(
     IllConditioningWarning
         If the rigorous bound of the flint solve leaves fewer than ``digits`` digits.
     """
-    method = validation.choice("method", method, METHODS)
+    method = validation.choice("method", method, WEAK_FORMS)
     n_terms = validation.positive_int("n_terms", n_terms)
     digits = validation.positive_int("digits", digits)
     b_in = stick_radius
@@ -259,7 +259,7 @@ def solve_reference(
         )
 
 
-def reference_set(stick_radii, methods=METHODS, n_terms=145, digits=DEFAULT_DIGITS, progress=True, **kwargs):
+def reference_set(stick_radii, methods=WEAK_FORMS, n_terms=145, digits=DEFAULT_DIGITS, progress=True, **kwargs):
     """``solve_reference`` for every (method, b); returns (list of solutions, total seconds)."""
     jobs = [(m, b) for m in methods for b in stick_radii]
     if progress:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import mpmath
 
 from .. import validation
-from ..solvers.weak_form import METHODS
+from ..solvers.weak_form import WEAK_FORMS
 from ..special.zeros import bessel_j2_zeros
 
 __all__ = [
@@ -232,7 +232,7 @@ def assemble(method: str, lam, b, form: str = "hyp1f2", progress: bool = False):
     -------
     (mpmath.matrix, list of mpf, list of mpf)
     """
-    method = validation.choice("method", method, METHODS)
+    method = validation.choice("method", method, WEAK_FORMS)
     n = len(lam)
     lommel = lommel_matrix(lam, b, progress=progress)
     size = n if method == "published" else n + 1

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import functools
 
-from ...solution import solve
+from ...solution import solve_cylinder
 from ...solvers.abel_fredholm import solve_abel_fredholm
 
 __all__ = ["exact", "exact_amplitudes"]
@@ -20,7 +20,7 @@ __all__ = ["exact", "exact_amplitudes"]
 @functools.lru_cache(maxsize=32)
 def exact(stick_radius: float):
     """The Abel-Fredholm ``Solution`` for b = ``stick_radius`` (default method of ``solve``)."""
-    return solve(stick_radius=stick_radius)
+    return solve_cylinder(stick_radius=stick_radius)
 
 
 @functools.lru_cache(maxsize=16)
