@@ -81,7 +81,7 @@ def by_torque(curves, per_panel, rng):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--per-panel", type=int, default=2)
-    p.add_argument("--seed", type=int, default=2024)
+    p.add_argument("--seed", type=int, required=True, help="of the random test points")
     p.add_argument("--json", required=True)
     p.add_argument("--macros")
     a = p.parse_args()

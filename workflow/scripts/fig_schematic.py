@@ -63,7 +63,7 @@ def plan_view(ax, b=0.6):
 
 def main():
     p = figure_parser(__doc__)
-    p.add_argument("--stick-radius", type=float, default=0.6, help="b/a drawn in the plan view")
+    p.add_argument("--stick-radius", type=float, required=True, help="b/a drawn in the plan view")
     a = p.parse_args()
     use_style(a.style)
     fig, (left, right) = plt.subplots(1, 2, figsize=(6.0, 3.3), gridspec_kw={"width_ratios": [1.0, 1.1]})

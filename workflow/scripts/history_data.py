@@ -110,7 +110,7 @@ def compliance(method, n_terms):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--method", default="fast", help="method of the monotonic solutions (default fast, converged)")
+    p.add_argument("--method", required=True, help="method of the monotonic solutions (fast: converged)")
     p.add_argument("--n-terms", type=int, default=145, help="N of the weak form (Fig. 5 companion; --method)")
     p.add_argument("--fit-n-terms", type=int, default=400, help="N for the threshold fit with a weak-form --method")
     p.add_argument("--n-points", type=int, default=40, help="states per slipping stretch of a loop")
