@@ -98,7 +98,7 @@ def check_weak_form_passage():
     n = 8
     digits = WORK_DPS
     with mpmath.workdps(digits):
-        lam = mp_forms.j2_zeros(n, digits)
+        lam = mp_forms.bessel_j2_zeros(n, digits)
         a2, b2 = mpmath.mpf(2), mpmath.mpf("1.2")
         m38, bl38, bc38 = _printed_system(lam, a2, b2, digits)
         m33, bl33, bc33 = _weak_form_by_quadrature(lam, a2, b2, digits)
