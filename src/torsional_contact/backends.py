@@ -157,8 +157,10 @@ class Series(_Scalars):
     has_rigid_rotation: ClassVar[bool] = True
 
     def __post_init__(self):
-        if self.form is None or self.solution.method != self.form:
-            raise TypeError(f"{type(self).__name__} holds the {self.form} weak form, got {self.solution.method!r}")
+        if self.solution.method != self.form:
+            expected = "the base of Published and Complete" if self.form is None else f"the {self.form} weak form"
+            raise TypeError(f"{type(self).__name__} is {expected}; got a {self.solution.method!r} solution "
+                            f"(use the class of METHODS[{self.solution.method!r}])")
 
     @classmethod
     def at_stick_radius(cls, b: float, n_terms: int) -> Series:
