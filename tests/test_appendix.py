@@ -21,7 +21,7 @@ import pytest
 from scipy import integrate, special
 
 from torsional_contact.solvers import kernels
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.special import integrals
 from torsional_contact.special.zeros import bessel_j2_zeros
 
@@ -141,7 +141,7 @@ def test_regularity_in_both_directions(g_at_b):
 def test_rigid_rotation_is_omega_plus_beta_torque():
     """u = omega r + sum c_n J1(lam_n r) vanishes on the stick disc with omega = Omega - beta T*."""
     b = 0.6
-    state = solve_fast(b)
+    state = solve_abel_fredholm(b)
     assert state.rigid_rotation == pytest.approx(state.rotation_constant - kernels.TORQUE_ROTATION * state.torque,
                                                  abs=1e-15)
     lam = bessel_j2_zeros(4000)

@@ -74,6 +74,20 @@ def test_imports_in_nested_blocks_are_dependencies(tmp_path, monkeypatch):
     assert files is not dependencies.library_files(str(script))
 
 
+def test_helper_modules_beside_a_script_are_dependencies(tmp_path, monkeypatch):
+    """A workflow script's own helper module (imported by its bare name) and what it imports are dependencies;
+    a package module of the same bare name elsewhere is not confused with it."""
+    monkeypatch.chdir(ROOT)
+    (tmp_path / "_helper.py").write_text("from torsional_contact.typeset import sci\n")
+    script = tmp_path / "figure.py"
+    script.write_text("import json\nfrom _helper import sci\n")
+    files = dependencies.library_files(str(script))
+    assert str(tmp_path / "_helper.py") in files and "src/torsional_contact/typeset.py" in files
+    figure = dependencies.library_files("workflow/scripts/fig3_torque_curve.py")
+    assert "workflow/scripts/_plotting.py" in figure and "src/torsional_contact/provenance.py" in figure
+    assert not any("matplotlib" in f for f in figure)
+
+
 def test_times_fields_and_records(tmp_path):
     assert benchmark_build._seconds("0m0.250s") == pytest.approx(0.25)
     assert benchmark_build._seconds("2m3.500s") == pytest.approx(123.5)

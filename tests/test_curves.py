@@ -29,13 +29,14 @@ from tolerances import (
 
 from torsional_contact import ResolutionWarning, solve
 from torsional_contact.criteria import spinning_deficit
-from torsional_contact.curves import loading_work, monotonic_curves
+from torsional_contact.curves import abel_fredholm_loading_work, monotonic_curves
+from torsional_contact.curves._precompute.build_table import CURVES as TABULATED
+from torsional_contact.curves._precompute.build_table import lobatto_coefficients, panel_edges
 from torsional_contact.curves.interpolant import ONSET_DELTA
-from torsional_contact.curves.table import CURVES as TABULATED
-from torsional_contact.curves.table import lobatto_coefficients, panel_edges, read_table
+from torsional_contact.curves.table import read_table
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle, threshold_asymptotics
 from torsional_contact.quadrature import gauss_legendre_panels
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 
 CURVES = monotonic_curves()
 #: Lebesgue constant of Chebyshev-Lobatto interpolation with at most 65 points: (2/pi) ln 65 + 1 < 4.  The table
@@ -49,7 +50,7 @@ GAP_ACCURACY = 5e-13
 def _direct(b):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
-        return solve_fast(b)
+        return solve_abel_fredholm(b)
 
 
 def _radii_off_nodes(per_panel: int, seed: int) -> np.ndarray:
@@ -60,7 +61,7 @@ def _radii_off_nodes(per_panel: int, seed: int) -> np.ndarray:
 
 
 def _table_bound(name: str, b: float) -> float:
-    """Truncation bound of the tabulated curve ``name`` at b, from the table's construction (``curves.table``).
+    """Truncation bound of the tabulated curve ``name`` at b, from the table's construction (its builder).
 
     On its panel the series keeps the coefficients above the chop tolerance (absolute + relative x the largest
     value on the panel) or the panel's recorded tail where it did not converge; each of the at most ``points``
@@ -141,7 +142,7 @@ def test_curves_by_radius_against_direct_solves(seed):
         assert_within(abs(CURVES.rotation_at_radius(b) - s.rigid_rotation),
                       _curve_bound("rigid_rotation", b, ROTATION_ACCURACY),
                       "solver accuracy of omega + table truncation")
-        assert_within(abs(CURVES.work_at_radius(b) - loading_work(s)),
+        assert_within(abs(CURVES.work_at_radius(b) - abel_fredholm_loading_work(s)),
                       _curve_bound("loading_work", b, _work_rounding(s)),
                       "rounding of (W2) (cancellation in D near b = 1) + table truncation")
 
@@ -179,7 +180,7 @@ def test_curves_by_torque_against_root_finding(tau):
     assert_within(abs(CURVES.rotation(tau) - s.rigid_rotation),
                   _curve_bound("rigid_rotation", b, ROTATION_ACCURACY) + rotation_slope * d_b
                   + 65e-16 * s.rigid_rotation, "omega's bound + its slope times db + refit")
-    work = loading_work(s)
+    work = abel_fredholm_loading_work(s)
     work_slope = abs(float(by_radius["loading_work"].derivative(b)))
     assert_within(abs(CURVES.work(tau) - work),
                   _curve_bound("loading_work", b, _work_rounding(s)) + work_slope * d_b + 65e-15 * work,
@@ -240,7 +241,7 @@ def test_small_disc_asymptotes():
     first = CURVES.table["panels"][0]
     chop = TABULATED["loading_work"][1] * abs(float(CURVES.work_at_radius(first["hi"])))
     slope_error = low * 2 / (first["hi"] - first["lo"]) * first["points"] ** 3 * chop
-    work = loading_work(s)
+    work = abel_fredholm_loading_work(s)
     assert_within(abs(CURVES.work_at_radius(x) - work),
                   _curve_bound("loading_work", low, _work_rounding(s)) + slope_error * math.log(low / x),
                   "table bound at b_low + the error of its edge slope times ln(b_low / b)")
@@ -255,7 +256,7 @@ def test_loading_work_against_slip_quadrature(b):
     nodes, weights = gauss_legendre_panels(b, 1.0, 0.05, sorted(breaks))
     quadrature = 2 * math.pi * np.sum(s.interface_slip(nodes) * nodes * weights)
     # both routes integrate D against smooth weights; (W1) through the 64-point interpolant of D (Lebesgue < 4)
-    assert_within(abs(loading_work(s) - quadrature), (LEBESGUE + 1) * _work_rounding(s),
+    assert_within(abs(abel_fredholm_loading_work(s) - quadrature), (LEBESGUE + 1) * _work_rounding(s),
                   "rounding of D in (W2) and, through its interpolant, in (W1)")
 
 

@@ -28,7 +28,7 @@ from torsional_contact.verification.errata import (
     settings,
     solution_e,
 )
-from torsional_contact.verification.quadrature import gauss_legendre
+from torsional_contact.verification.quadrature_mp import gauss_legendre
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -349,7 +349,7 @@ def test_dual_series_detects_wrong_formulas(key, wrong, row):
 def test_quadrature_detects_a_wrong_formula():
     """The machinery would flag a sign error in (35): h with + 2 J0 J1 / lam."""
     with mpmath.workdps(40):
-        lam = weak_form_mp.j2_zeros(3, 40)[2]
+        lam = weak_form_mp.bessel_j2_zeros(3, 40)[2]
         nodes, weights = gauss_legendre(0, 1, 2 * lam)
         quad = mpmath.fsum(w * mpmath.besselj(1, lam * r) ** 2 * r for r, w in zip(nodes, weights, strict=True))
         j0, j1 = mpmath.besselj(0, lam), mpmath.besselj(1, lam)

@@ -42,7 +42,7 @@ from torsional_contact.diagnostics import TorsionalContactWarning, UnphysicalRes
 from torsional_contact.io.cli import build_parser, main
 from torsional_contact.solution import with_tolerance
 from torsional_contact.solvers import kernels
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.special.zeros import bessel_j2_zeros
 
 EDGE_RADII = [0.0, 5e-324, 1e-200, 1e-10, 1 - 1.1e-16, 1 - 1e-12, 1 - 1e-8, 0.999, 1.0]
@@ -113,7 +113,7 @@ def test_every_stick_radius_balances_and_stays_physical(b):
         if b > 0:
             assert np.all(np.isfinite(slip)) and np.all(slip[r < b] == 0)
             # slip >= 0, to its rounding (none at all in the small-slip and small-disc forms)
-            solver = getattr(s.backend, "solution", None)  # a FastSolution, or a closed form (S4, small disc)
+            solver = getattr(s.backend, "solution", None)  # a AbelFredholmSolution, or a closed form (S4, small disc)
             rounding = slip_rounding(solver) if getattr(solver, "n_nodes", 0) else 64 * EPS
             assert_within(max(0.0, -float(np.min(slip))), rounding, "rounding of the slip (F7)")
         scene = with_tolerance(s, 1e-4)  # a plot's tolerance keeps z = 1e-2 at 512 Dini terms
@@ -181,7 +181,7 @@ def test_onset_expansion_against_abel_fredholm(delta):
     verifies the growth of ``tolerances.torque_accuracy`` next to slip onset.
     """
     b = 1.0 - delta
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     delta = 1.0 - fast.stick_radius
     residual = fast.torque - float(asymptotics.onset_torque(delta))
     assert_within(abs(residual), onset_remainder(delta) + torque_accuracy(b), "(S1) remainder + solver accuracy")
@@ -204,7 +204,7 @@ def test_onset_fields_against_abel_fredholm(delta):
     plus the slip's rounding (``tolerances.slip_rounding``).
     """
     b = 1.0 - delta
-    fast, crack = solve_fast(b), asymptotics.edge_crack(b)
+    fast, crack = solve_abel_fredholm(b), asymptotics.edge_crack(b)
     r = 1 - delta * np.array([1.5, 2, 5, 10, 100, 1e3, 1e4])
     assert_close(fast.interface_traction(r), crack.interface_traction(r), "(S3) remainder 3 delta^2 + accuracy",
                  atol=3 * delta**2 + profile_accuracy(b))
@@ -257,7 +257,7 @@ def test_spinning_expansion_against_abel_fredholm(b):
     corrections whose coefficients are below 1 (the solver gives -0.48 for (S7), 0.36 for the traction): bounds
     10 b^2; plus the solver's accuracy.
     """
-    fast, small = solve_fast(b), asymptotics.small_stick_disc(b)
+    fast, small = solve_abel_fredholm(b), asymptotics.small_stick_disc(b)
     assert_within(abs(fast.rigid_rotation - small.rigid_rotation), ROTATION_ACCURACY + b**3 * math.log(1 / b),
                   "(S6) remainder O(b^3 ln b) + solver accuracy")
     assert_close(fast.torque_deficit, small.torque_deficit, "(S7): 10 b^2 relative + 512 EPS (n-term sums)",
@@ -289,7 +289,8 @@ def test_tiny_stick_discs_cli_and_api(b, capsys):
 
 def test_spinning_constant_matches_the_solver():
     b = 1e-8  # the next term is ~0.2 b^2 (tests/test_curves.py: c2 = e2/2 - 1/8)
-    assert_within(abs(solve_fast(b).rigid_rotation - 0.5 * math.log(1 / b) - asymptotics.spinning_rotation_constant()),
+    omega = solve_abel_fredholm(b).rigid_rotation
+    assert_within(abs(omega - 0.5 * math.log(1 / b) - asymptotics.spinning_rotation_constant()),
                   ROTATION_ACCURACY + b**2, "solver accuracy + the b^2 term (coefficient 0.2 < 1)")
 
 
@@ -300,7 +301,7 @@ def test_slip_of_small_stick_discs_against_direct_quadrature(b):
     Bound: quadpack's error estimate and the rounding of D in both routes (``tolerances.slip_rounding``, halved:
     a displacement), whose interpolant the library integrates.
     """
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     for r in (2 * b, 0.1, 0.5, 1.0):
         phi_b = math.asin(b / r)
         integrand = lambda p, r=r: math.sin(p) * float(fast._d_function(np.array([r * math.sin(p)]))[0])  # noqa: E731
@@ -323,7 +324,7 @@ def test_sigma_rt_on_the_face_against_the_dini_series(b):
     s = solve(stick_radius=b) if b > 0 else solve(torque=4 / 3)
     r = np.array([0.3, 0.5, 0.7, 0.9])
     face = s.stress(r, 0.0)[1]
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     lam = bessel_j2_zeros(16384)
     weights = fast.dini_amplitudes(16384) * lam
     z = np.array([1.6e-3, 1.2e-3, 0.8e-3, 0.4e-3])
@@ -425,7 +426,7 @@ def test_truncation_warning_once_per_call_and_close_to_the_real_error():
             call()
         assert len(own_warnings(caught)) == 1 and caught[0].category is TruncationWarning
     # the estimate from the amplitudes' decay against the real tail of 256 -> 1024 terms
-    fast = solve_fast(0.6)
+    fast = solve_abel_fredholm(0.6)
     lam, c = bessel_j2_zeros(1024), fast.dini_amplitudes(1024)
     r = np.linspace(0.0005, 0.9995, 1999)
     for z in (1e-2, 3e-3, 1e-3):

@@ -28,7 +28,7 @@ from tolerances import (
 
 from torsional_contact import fields
 from torsional_contact.solvers import kernels
-from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
+from torsional_contact.solvers.abel_fredholm import default_nodes, solve_abel_fredholm
 from torsional_contact.solvers.weak_form import solve_series
 from torsional_contact.special.zeros import bessel_j2_zeros
 
@@ -151,7 +151,7 @@ def test_resolution_convergence(b):
     """The default resolution (``default_nodes``: about 1e-14 in T*) against twice as many nodes: both within the
     solver's accuracy bounds (tests/tolerances.py)."""
     n = default_nodes(b)
-    coarse, fine = solve_fast(b), solve_fast(b, 2 * n)
+    coarse, fine = solve_abel_fredholm(b), solve_abel_fredholm(b, 2 * n)
     assert_within(abs(coarse.torque - fine.torque), 2 * torque_accuracy(b), "T* bound, both resolutions")
     assert_within(abs(coarse.rigid_rotation - fine.rigid_rotation), 2 * ROTATION_ACCURACY, "omega bound, both")
     r = np.linspace(0, 1, 301)
@@ -160,7 +160,7 @@ def test_resolution_convergence(b):
     assert_close(coarse.interface_slip(r), fine.interface_slip(r), "profile bound, both resolutions",
                  atol=2 * PROFILE_ACCURACY)
     # the default is not wastefully far from what the error needs
-    half = solve_fast(b, max(4, n // 2))
+    half = solve_abel_fredholm(b, max(4, n // 2))
     assert abs(half.torque - fine.torque) > 0 or n == 16
 
 
@@ -168,8 +168,8 @@ def test_geometric_convergence_in_nodes():
     """Gauss-Legendre in theta converges like rho^(-2n), rho the Bernstein parameter of the image singularity of P
     (``default_nodes``): four more nodes divide the error by rho^8."""
     b = 0.9
-    reference = solve_fast(b, 80)
-    errors = [abs(solve_fast(b, n).torque - reference.torque) for n in (6, 10, 14, 18)]
+    reference = solve_abel_fredholm(b, 80)
+    errors = [abs(solve_abel_fredholm(b, n).torque - reference.torque) for n in (6, 10, 14, 18)]
     height = 2.0 * math.asinh(math.sqrt(1.0 - b) / math.sqrt(b)) / (math.pi / 4.0)
     z = complex(-1.0, height)
     rho = max(abs(z + np.sqrt(z * z - 1.0)), abs(z - np.sqrt(z * z - 1.0)))
@@ -182,7 +182,7 @@ def test_geometric_convergence_in_nodes():
 def test_agrees_with_extrapolated_weak_form():
     """T_N = T + (a + c ln N)/N fitted to the complete weak form at N = 1000..4000."""
     b = 0.6
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     n_values = np.array([1000, 1414, 2000, 2828, 4000])
     runs = [solve_series(b, "complete", int(n)) for n in n_values]
     torque = np.array([s.torque for s in runs])
@@ -203,7 +203,7 @@ def test_agrees_with_extrapolated_weak_form():
 def test_dini_representation_of_the_solution(b):
     """omega r + sum c_n J1(lam_n r) (the paper's eq. 25 with the rigid mode) reproduces
     the Abel interface displacement: zero on the stick disc, slip/2 on the annulus."""
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     n_terms = 4000
     lam = bessel_j2_zeros(n_terms)
     amplitudes = fast.dini_amplitudes(n_terms)
@@ -231,7 +231,7 @@ def test_dini_representation_of_the_solution(b):
 
 @pytest.mark.parametrize("b", RADII)
 def test_interface_conditions_and_identities(b):
-    fast = solve_fast(b)
+    fast = solve_abel_fredholm(b)
     x, w = legendre.leggauss(200)
     theta, w_theta = np.pi / 4 * (x + 1), np.pi / 4 * w
     rho, w_rho = b * np.cos(theta), b * np.sin(theta) * w_theta
@@ -275,7 +275,7 @@ def test_interface_conditions_and_identities(b):
 
 def test_torque_curve_is_monotone_with_the_right_limits():
     radii = np.linspace(0.02, 0.98, 49)
-    torque = np.array([solve_fast(b).torque for b in radii])
+    torque = np.array([solve_abel_fredholm(b).torque for b in radii])
     assert np.all(np.diff(torque) < 0)
     assert 1 < torque[-1] < torque[0] < 4 / 3
 
@@ -284,7 +284,7 @@ def test_small_stick_discs():
     radii = np.geomspace(1e-3, 0.02, 6)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        runs = [solve_fast(b) for b in radii]
+        runs = [solve_abel_fredholm(b) for b in radii]
     torque = np.array([s.torque for s in runs])
     omega = np.array([s.rigid_rotation for s in runs])
     assert np.all(np.isfinite(torque)) and np.all(np.isfinite(omega))
@@ -296,7 +296,7 @@ def test_small_stick_discs():
     # omega ~ ln(1/b)/2 + const as b -> 0, with an O(b^2) correction (coefficient 0.2 < 1): 10 b^2
     offset = omega - 0.5 * np.log(1 / radii)
     assert_within(np.ptp(offset), 10 * radii[-1] ** 2 + 2 * ROTATION_ACCURACY, "10 b^2 + omega's bound")
-    spinning = solve_fast(0.0)
+    spinning = solve_abel_fredholm(0.0)
     assert spinning.torque == 4 / 3 and spinning.rigid_rotation == math.inf
     assert np.all(spinning.interface_traction([0.0, 0.5, 1.0]) == 1.0)
     assert spinning.interface_slip(0.5) == math.inf
@@ -309,7 +309,7 @@ def test_large_stick_discs():
     radii = 1 - np.geomspace(0.02, 1e-3, 5)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        runs = [solve_fast(b) for b in radii]
+        runs = [solve_abel_fredholm(b) for b in radii]
     torque = np.array([s.torque for s in runs])
     assert np.all(np.isfinite(torque)) and np.all(np.diff(torque) < 0)
     # T* - 1 = (2/pi) delta + delta^2/8 + remainder (S1) near slip onset
@@ -318,7 +318,7 @@ def test_large_stick_discs():
     bound = np.array([onset_remainder(d) + torque_accuracy(1 - d) for d in delta]) / delta
     assert_close(slope, 2 / np.pi + delta / 8, "(S1) remainder + solver accuracy, over delta", atol=bound)
     assert np.all([s.rigid_rotation > 0 for s in runs])
-    onset = solve_fast(1.0)
+    onset = solve_abel_fredholm(1.0)
     assert onset.torque == 1.0 and onset.rigid_rotation == 0.0
     r = np.linspace(0, 1, 11)
     assert np.all(onset.interface_traction(r) == r) and np.all(onset.interface_slip(r) == 0)
@@ -329,13 +329,13 @@ def test_capped_resolution_warns():
     from torsional_contact.diagnostics import ResolutionWarning
 
     with pytest.warns(ResolutionWarning):
-        solve_fast(1 - 1e-9)
+        solve_abel_fredholm(1 - 1e-9)
 
 
 def test_bad_input():
     for bad in (-0.1, 1.1, math.nan, math.inf):
         with pytest.raises(ValueError, match="stick_radius"):
-            solve_fast(bad)
+            solve_abel_fredholm(bad)
 
 
 #: Accuracy of the direct collocation (``verification.collocation``) against the exact solution.  An exception to
@@ -352,7 +352,7 @@ def test_agrees_with_direct_collocation(b, n_basis):
     """A second method: first-kind collocation of u = 0 on the stick disc (``verification.collocation``)."""
     from torsional_contact.verification.collocation import solve_direct
 
-    fast, direct = solve_fast(b), solve_direct(b, n_basis)
+    fast, direct = solve_abel_fredholm(b), solve_direct(b, n_basis)
     assert direct.residual < 1e-12  # the collocation's own convergence criterion
     r = np.linspace(0, 1, 101)
     reason = "stated accuracy of the collocation (COLLOCATION)"

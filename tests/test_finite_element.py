@@ -164,9 +164,14 @@ def test_points_outside_the_mesh_are_rejected(coarse):
         fe.front_coefficient(coarse[0.6].slip_field, None, 0.01, 0.02)
 
 
+#: The element settings of config/config.yaml (fem_validation: degree, truncation), which the rule passes.
+ELEMENT_OPTIONS = ("--degree", "4", "--truncation", "3.0")
+
+
 def _script(*args):
-    return subprocess.run([sys.executable, str(ROOT / "workflow" / "scripts" / "fem_validation.py"), *args],
-                          capture_output=True, text=True, cwd=ROOT)
+    """Run the workflow script with the configured element settings (later options override them)."""
+    return subprocess.run([sys.executable, str(ROOT / "workflow" / "scripts" / "fem_validation.py"), *ELEMENT_OPTIONS,
+                           *args], capture_output=True, text=True, cwd=ROOT)
 
 
 def test_workflow_script_small_setting(tmp_path):

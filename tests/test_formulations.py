@@ -4,12 +4,12 @@ import warnings
 
 import numpy as np
 import pytest
-from quadrature import integrate
+from oscillatory_quadrature import integrate
 from tolerances import EPS, WEAK_FORM_TRUNCATION, assert_close, assert_within, rotation_b2_coefficient
 
 from torsional_contact import ResolutionWarning, solve
 from torsional_contact.diagnostics import UnphysicalResultWarning
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.solvers.weak_form import assemble, solve_series
 from torsional_contact.special.integrals import coupling_matrix, dini_norm, load_vector
 from torsional_contact.special.zeros import bessel_j2_zeros
@@ -56,7 +56,7 @@ def test_eigenfunction_traction_carries_no_torque():
     # T* = 4 int_0^1 traction r^2 dr holds identically for the series
     s = solve(stick_radius=0.45, n_terms=300, method="complete")
     total = 4 * integrate(lambda r: s.traction(r.ravel()).reshape(r.shape) * r**2, 0, 1, 3.2 * 300)
-    # the quadrature resolves every term (tests/quadrature.py: ~1e-14); the 300-term sums round to 300 EPS
+    # the quadrature resolves every term (tests/oscillatory_quadrature.py: ~1e-14); the 300-term sums round to 300 EPS
     assert_within(abs(total - s.torque), 1e-14 + 300 * EPS, "quadrature + rounding of the 300-term series")
 
 
@@ -104,7 +104,7 @@ def test_rigid_rotation_grows_like_half_log_one_over_b():
     slopes per ln 2 are 1/2 - c2 (b1^2 - b2^2) / ln 2 to O(b^4); the weak form at N = 2000 reproduces omega to its
     truncation error, which converges like 1/N: below the change from N = 125 (fifteen times the N = 2000 error)."""
     radii = np.array([0.02, 0.04, 0.08])
-    exact = np.array([solve_fast(b).rigid_rotation for b in radii])
+    exact = np.array([solve_abel_fredholm(b).rigid_rotation for b in radii])
     slopes = -np.diff(exact) / np.log(2)
     curvature = rotation_b2_coefficient() * (radii[:-1] ** 2 - radii[1:] ** 2) / np.log(2)
     # beyond c2 b^2, (S6) drops the O(b^3 ln b) mixed and E_b terms (tests/test_extremes.py bounds them by
@@ -128,7 +128,8 @@ class TestPublishedDefect:
 
     def test_int_u_r2_vanishes_so_slip_cannot_be_one_signed(self):
         # int_0^1 u r^2 dr = 0 for every J1(lam_n r) with J2(lam_n) = 0: by Gauss panels resolving the series
-        # (tests/quadrature.py, ~1e-14), to the rounding of the 145-term series (145 EPS x sum of the terms < 1)
+        # (tests/oscillatory_quadrature.py, ~1e-14), to the rounding of the 145-term series
+        # (145 EPS x sum of the terms < 1)
         moment = integrate(lambda r: self.pub.slip(r.ravel()).reshape(r.shape) / 2 * r**2, 0, 1, 3.2 * 145)
         assert_within(abs(moment), 1e-14 + 145 * EPS, "quadrature + rounding of the 145-term series")
         assert np.min(self.pub.slip(np.linspace(self.b, 1, 4000))) < -0.04  # backward slip
@@ -169,6 +170,6 @@ def test_slip_never_raises_the_shear_above_the_bilateral_maximum(b):
     assert_within(max(0.0, resultant.max() - s.torque), 1e-12 + 64 * EPS, "fields' tolerance + rounding")
     # attained far from the interface, at r = a: within ten times the slowest Dini mode at z = 1.5,
     # |c_1 lam_1 J1(lam_1 r)| exp(-1.5 lam_1) <= |c_1| lam_1 0.582 exp(-1.5 lam_1)
-    c1 = abs(solve_fast(b).dini_amplitudes(1)[0])
+    c1 = abs(solve_abel_fredholm(b).dini_amplitudes(1)[0])
     lam1 = bessel_j2_zeros(1)[0]
     assert_within(s.torque - resultant.max(), 10 * c1 * lam1 * 0.582 * np.exp(-1.5 * lam1), "slowest Dini mode")

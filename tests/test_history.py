@@ -313,14 +313,14 @@ def test_residual_traction_is_elastic_unloading():
 def test_monotonic_traction_grows_with_torque():
     """Supports |q| <= 1 on the stick disc of a reversal: q_m(r; tau) nondecreasing in tau."""
     taus = np.linspace(1.02, 1.3, 8)
-    q = np.array([H.monotonic(t).traction(R) for t in taus])
+    q = np.array([H.monotonic_solution(t).traction(R) for t in taus])
     # exact (Abel-Fredholm) profiles: nondecreasing to twice their accuracy
     assert_within(max(0.0, -float(np.min(np.diff(q, axis=0)))), 2 * PROFILE_ACCURACY, "traction accuracy, twice")
 
 
 def test_cumulative_slip_of_symmetric_cycles():
     states = H.history([1.25, -1.25, 1.25, -1.25])
-    mono = H.monotonic(1.25)
+    mono = H.monotonic_solution(1.25)
     # seven increments of 2 s_m (up to 0.5 each), summed: 7 x the superposition rounding of slips up to 1
     assert_close(H.cumulative_slip(states, R), 7.0 * np.abs(mono.slip(R)), "rounding of 7 superposed increments",
                  atol=7 * SUPERPOSITION)

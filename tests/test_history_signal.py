@@ -32,7 +32,7 @@ from torsional_contact import histories as H
 from torsional_contact.histories.monotonic import point
 from torsional_contact.histories.signal import gated_signal
 from torsional_contact.io.cli import main
-from torsional_contact.io.history_signal import DEFAULT_BIN_WIDTH, STATES_IN_JSON
+from torsional_contact.io.history_command import DEFAULT_BIN_WIDTH, STATES_IN_JSON
 from torsional_contact.io.signal_files import format_columns, read_signal, read_table, write_table
 
 SCALE = 1.3 / 5  # the ASTM E1049-85 example (peaks -2 .. 5) scaled into [-4/3, 4/3]

@@ -3,7 +3,7 @@
 import mpmath
 import numpy as np
 import pytest
-from quadrature import integrate
+from oscillatory_quadrature import integrate
 from scipy import special
 from tolerances import EPS, assert_close, assert_within
 
@@ -23,8 +23,8 @@ def j1(x):
 def test_dini_norm_eq35(m):
     lam = LAM[m - 1]
     expected = integrate(lambda r: j1(lam * r) ** 2 * r, 0.0, 1.0, 2 * lam)
-    # the quadrature (tests/quadrature.py: ~1e-14 of the integrand's size) relative to h ~ 1/(pi lam), and the
-    # closed form's rounding with J0, J1 at lam (conditioning lam EPS)
+    # the quadrature (tests/oscillatory_quadrature.py: ~1e-14 of the integrand's size) relative to h ~ 1/(pi lam),
+    # and the closed form's rounding with J0, J1 at lam (conditioning lam EPS)
     assert_within(abs(integrals.dini_norm(lam) / expected - 1), 1e-14 * np.pi * lam + 16 * lam * EPS,
                   "quadrature relative to h + conditioning of J(lam)")
     # at a zero of J2 it reduces to J1(lam)^2 / 2: the same to the conditioning of J0, J1 at the rounded zero

@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from torsional_contact import ResolutionWarning, asymptotics
-from torsional_contact.curves import loading_work, monotonic_curves
+from torsional_contact.curves import abel_fredholm_loading_work, monotonic_curves
 from torsional_contact.curves.interpolant import ONSET_WORK
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 
 DERIVED = 0.5 - 3 * math.pi**2 / 64
 FITTED_BEFORE = 0.04
@@ -27,9 +27,9 @@ def _scaled_excess(delta):
     """(e, g) with g = (W_mono / ((pi^4/12) e^3) - 1) / e from the Abel-Fredholm solution at b = 1 - delta."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
-        s = solve_fast(1 - delta)
+        s = solve_abel_fredholm(1 - delta)
     e = s.torque - 1
-    return e, (loading_work(s) / (math.pi**4 / 12 * e**3) - 1) / e
+    return e, (abel_fredholm_loading_work(s) / (math.pi**4 / 12 * e**3) - 1) / e
 
 
 def _fit(deltas):

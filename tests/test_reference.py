@@ -33,20 +33,20 @@ def _quad(f, lower, upper, lam_max):
 
 def test_zeros_match_besseljzero_and_restore_precision():
     before = mpmath.mp.dps
-    lam = weak_form_mp.j2_zeros(145, 50)
+    lam = weak_form_mp.bessel_j2_zeros(145, 50)
     assert mpmath.mp.dps == before
     with mpmath.workdps(50):
         for n in (1, 2, 5, 60, 145):
             assert_within(abs(lam[n - 1] - mpmath.besseljzero(2, n)), mpmath.mpf(10) ** -48 * lam[n - 1],
                           "50-digit zeros: 100 units of the last digit")
-    picked = weak_form_mp.j2_zeros_at([3, 145], 50)
+    picked = weak_form_mp.bessel_j2_zeros_at([3, 145], 50)
     assert picked == (lam[2], lam[144])
 
 
 @pytest.mark.parametrize("lam_index", [1, 7, 40])
 def test_closed_forms_match_quadrature(lam_index):
     with mpmath.workdps(30):
-        lam = weak_form_mp.j2_zeros(max(40, lam_index + 1), 30)
+        lam = weak_form_mp.bessel_j2_zeros(max(40, lam_index + 1), 30)
         x, y = lam[lam_index - 1], lam[lam_index]
         b = mpmath.mpf("0.35")
         # 30-digit closed forms against 30-digit quadrature of oscillatory Bessel products: cancellation in the
@@ -76,7 +76,7 @@ def test_hyp1f2_and_struve_forms_agree_at_large_argument():
 
 
 def test_assembly_matches_double_precision_assembly():
-    lam = weak_form_mp.j2_zeros(30, 30)
+    lam = weak_form_mp.bessel_j2_zeros(30, 30)
     lam_double = bessel_j2_zeros(30)
     for method in ("published", "complete"):
         with mpmath.workdps(30):

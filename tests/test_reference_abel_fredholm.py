@@ -213,7 +213,7 @@ def test_traction_near_slip_onset_at_two_precisions():
     for work in (25, 32):
         state = solve_state("0.97", 70, work)
         with working_digits(work):
-            values.append([_mp(v) for v in state.traction_arb([mp_to_arb(mpmath.mpf(r)) for r in radii])])
+            values.append([_mp(v) for v in state.interface_traction([mp_to_arb(mpmath.mpf(r)) for r in radii])])
     with working_digits(32):
         assert_within(max(abs(a - c) for a, c in zip(*values, strict=True)), mpmath.mpf(10) ** -22,
                       "70 nodes' accuracy at b = 0.97 (the coarser of the two precisions is 25 digits)")
@@ -346,7 +346,7 @@ def test_torque_balance_by_quadrature_of_the_traction(references):
 
         def integrand(theta):
             r = b * mpmath.cos(theta)
-            q = arb_to_mp(state.traction_arb([mp_to_arb(r)])[0])
+            q = arb_to_mp(state.interface_traction([mp_to_arb(r)])[0])
             return q * r * r * b * mpmath.sin(theta)
 
         mpmath.mp.dps = 24

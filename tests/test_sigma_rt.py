@@ -12,7 +12,7 @@ import pytest
 
 from torsional_contact import fields, solve
 from torsional_contact.solvers import interface
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.special.zeros import bessel_j2_zeros
 from torsional_contact.verification import finite_element as fe
 
@@ -22,7 +22,7 @@ ANNULUS = np.array([1e-6, 1e-3, 0.1, 0.5, 0.9, 0.999, 0.9999])  # (r - b) / (1 -
 @pytest.mark.parametrize("b", [0.5, 0.65, 0.8, 0.85])
 def test_two_representations_agree(b):
     """D-series (b >= 1/2) against the spinning kernel (K5) plus the m'-series of the b < 1/2 formula."""
-    s = solve_fast(b)
+    s = solve_abel_fredholm(b)
     r = b + (1 - b) * ANNULUS
     # measured <= 1.4e-12 (next to r = 1, where both inherit the corner slope error of the E_1 table), 7e-14 elsewhere
     np.testing.assert_allclose(s.interface_sigma_rt(r), interface.face_shear(r, b, s._correction_chebyshev),
@@ -48,7 +48,7 @@ def test_ends_of_the_annulus(b):
 def test_against_the_dini_series_extrapolated_to_the_face():
     """The Dini series of the traction (c_n from the traction, not the slip) at small z, extrapolated to z = 0."""
     b = 0.6
-    s, fast = solve(stick_radius=b), solve_fast(b)
+    s, fast = solve(stick_radius=b), solve_abel_fredholm(b)
     r = np.array([0.65, 0.75, 0.85, 0.95])
     lam = bessel_j2_zeros(8192)
     weights = fast.dini_amplitudes(8192) * lam

@@ -184,7 +184,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
         ("src/torsional_contact/verification/errata/appendix_a.py",
          {"errata", "errata_tables", "paper_tables", "paper", "supplement", "notebook", "report", "all"}),
         # the figure helpers: every figure, the manuscript and the report (no data or verification rule)
-        ("src/torsional_contact/io/plotting.py",
+        ("workflow/scripts/_plotting.py",
          {"fig_schematic", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig_published_vs_complete",
           "fig_von_mises",
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",

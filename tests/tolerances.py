@@ -107,7 +107,7 @@ def rotation_b2_coefficient() -> float:
 
 
 def torque_accuracy(b) -> float:
-    """Bound on |T*_double - T*| of ``solve_fast(b)`` (and of the T* samples of the shipped curve table).
+    """Bound on |T*_double - T*| of ``solve_abel_fredholm(b)`` (and of the T* samples of the shipped curve table).
 
     1e-13 (450 EPS: the rounding of the Nystrom solve and of (F4)); next to slip onset the image singularity of the
     kernel P at t + s = 2 comes within 1 - b of the Nystrom grid, and the rounding of the solve grows like
@@ -124,8 +124,8 @@ WEAK_FORM_TRUNCATION = {"slip_traction": (3.0, 1), "stick_slip": (3.0, 2), "torq
 
 
 def profile_accuracy(b) -> float:
-    """Bound on the error of the interface traction and slip of ``solve_fast(b)``: ``PROFILE_ACCURACY``, plus the
-    same growth as the T* bound next to slip onset (``torque_accuracy``), 1e-16 / (1 - b)."""
+    """Bound on the error of the interface traction and slip of ``solve_abel_fredholm(b)``: ``PROFILE_ACCURACY``,
+    plus the same growth as the T* bound next to slip onset (``torque_accuracy``), 1e-16 / (1 - b)."""
     return PROFILE_ACCURACY + (1e-16 / (1.0 - float(b)) if b < 1.0 else 0.0)
 
 

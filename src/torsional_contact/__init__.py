@@ -24,12 +24,12 @@ except _metadata.PackageNotFoundError:  # pragma: no cover - running from a sour
 
 #: public name -> submodule that defines it
 _EXPORTS = {
-    "solve": "solution",
+    "solve": "dispatch",
     "Solution": "solution",
     "torque_curve": "solution",
-    "METHODS": "solution",
-    "DEFAULT_METHOD": "solution",
-    "DEFAULT_N_TERMS": "solution",
+    "METHODS": "backends",
+    "DEFAULT_METHOD": "backends",
+    "DEFAULT_N_TERMS": "backends",
     "history": "histories",
     "Specimen": "specimen",
     "fit_loop": "fitting",

@@ -79,7 +79,7 @@ The traction on the stick disc is the half-space one, q = (2/pi) arctan(r sqrt(1
 sqrt(b^2 - r^2)) + O(b^2); the slip is (F7) with that D(t) = t (2 Omega - arcsech t - e(t)).
 sigma_rt(r, 0) is that of spinning (``kernels.spinning_shear``, eq. K5) minus the part of
 the Abel integral over the stick disc, ~(1/pi)(phi_b - sin phi_b cos phi_b), phi_b =
-arcsin(b/r) (it vanishes at r = b+; ``FastSolution.interface_sigma_rt``).  Validation: (S6)
+arcsin(b/r) (it vanishes at r = b+; ``AbelFredholmSolution.interface_sigma_rt``).  Validation: (S6)
 matches the Abel-Fredholm omega to
 1.5e-11 at b = 1e-2 and 1e-15 at b = 1e-3.
 
@@ -106,7 +106,7 @@ from scipy import special
 from .criteria import GROSS_SLIP_TORQUE
 from .quadrature import gauss_legendre, gauss_legendre_panels
 from .solvers import kernels
-from .solvers.abel_fredholm import FastSolution
+from .solvers.abel_fredholm import AbelFredholmSolution
 from .special import integrals
 from .special.zeros import bessel_j2_zeros
 
@@ -171,7 +171,7 @@ def onset_slip_width(excess):
 class EdgeCrack:
     """Small-slip state 0 < 1 - b < ``ONSET_FIELDS``: scalars (S1), (S2), fields (S3)-(S5).
 
-    The same interface as ``solvers.abel_fredholm.FastSolution`` (positive torque).
+    The same interface as ``solvers.abel_fredholm.AbelFredholmSolution`` (positive torque).
     """
 
     stick_radius: float
@@ -216,7 +216,7 @@ class EdgeCrack:
         return np.where(slipping, values, 0.0)
 
     def dini_amplitudes(self, n_terms: int) -> np.ndarray:
-        """c_n = -(q, J1(lam_n r)) / (lam_n h_n) of the traction (S3) (see ``FastSolution``).
+        """c_n = -(q, J1(lam_n r)) / (lam_n h_n) of the traction (S3) (see ``AbelFredholmSolution``).
 
         q = 1 - (2 T*/pi)[(pi/2) x - delta] - (2 T*/pi) rem(x) on the stick disc, with
         rem = x arccos(delta/x) - (pi/2) x + delta = O(delta^3/x^2): the first part in
@@ -282,10 +282,10 @@ def spinning_rotation_constant() -> float:
 
 
 @dataclass(frozen=True)
-class SmallStickDisc(FastSolution):
+class SmallStickDisc(AbelFredholmSolution):
     """0 < b < ``SPINNING_SWITCH``: (S6), (S7), the half-space traction and the slip of (F7).
 
-    A ``FastSolution`` without Nystrom nodes: its (F7) slip uses D(t) = t (2 Omega -
+    A ``AbelFredholmSolution`` without Nystrom nodes: its (F7) slip uses D(t) = t (2 Omega -
     arcsech t - (E_1(t) - E_b(t))/t), the mixed term being O(b^3 ln b).
     """
 

@@ -28,7 +28,7 @@ from . import asymptotics
 from .criteria import GROSS_SLIP_TORQUE, spinning_deficit
 from .curves import monotonic_curves
 from .diagnostics import ResolutionWarning, UnphysicalResultWarning
-from .solvers.abel_fredholm import RESOLUTION_TOLERANCE, FastSolution, solve_fast
+from .solvers.abel_fredholm import RESOLUTION_TOLERANCE, AbelFredholmSolution, solve_abel_fredholm
 from .solvers.weak_form import SeriesSolution, resolution_limit, solve_series
 
 __all__ = ["B_TOLERANCE", "largest_resolved_radius", "invert_abel_fredholm", "invert_series"]
@@ -46,14 +46,14 @@ def largest_resolved_radius() -> float:
     return 1.0 - asymptotics.ONSET_SCALARS
 
 
-def _residual(solution: FastSolution, target: float, near_spinning: bool) -> float:
+def _residual(solution: AbelFredholmSolution, target: float, near_spinning: bool) -> float:
     """T*(b) - target, or its exact form (4/3 - target) - (4/3 - T*(b)) next to 4/3."""
     if near_spinning:
         return spinning_deficit(target) - solution.torque_deficit
     return solution.torque - target
 
 
-def invert_abel_fredholm(target: float) -> FastSolution | None:
+def invert_abel_fredholm(target: float) -> AbelFredholmSolution | None:
     """Stick radius b with T*(b) = target, 1 < target < 4/3; None below the resolved slip annuli.
 
     The interpolant b(tau) of ``curves`` is the first guess; Newton steps with the
@@ -72,23 +72,23 @@ def invert_abel_fredholm(target: float) -> FastSolution | None:
     with warnings.catch_warnings():  # the probes; the answer below warns for itself
         warnings.simplefilter("ignore", ResolutionWarning)
         for _ in range(_NEWTON_STEPS):
-            solution = solve_fast(b)
+            solution = solve_abel_fredholm(b)
             step = _residual(solution, target, near_spinning) / float(slope(b))
             if abs(step) <= B_TOLERANCE * (b if near_spinning else 1.0):
                 break
             b = min(max(b - step, 0.5 * b), b_max)
         else:
-            edge = solve_fast(b_max)
+            edge = solve_abel_fredholm(b_max)
             if _residual(edge, target, near_spinning) >= 0.0:
                 # within the solver's noise (~1e-12) of the switch to (S1), where T*(b_max) of the
                 # solver and of the expansion differ by that much: the switch itself is the root
                 return edge
             scale = min(1.0, float(curves.stick_radius(target)) * 2.0)
-            b = optimize.brentq(lambda c: _residual(solve_fast(c), target, near_spinning), 0.0, b_max,
+            b = optimize.brentq(lambda c: _residual(solve_abel_fredholm(c), target, near_spinning), 0.0, b_max,
                                 xtol=B_TOLERANCE * scale, rtol=_RELATIVE_TOLERANCE)
             solution = None
     if solution is None or solution.stick_radius != b or solution.resolution_estimate > RESOLUTION_TOLERANCE:
-        solution = solve_fast(b)
+        solution = solve_abel_fredholm(b)
     return solution
 
 
@@ -115,7 +115,7 @@ def invert_series(target: float, method: str, n_terms: int) -> SeriesSolution:
             f"torque={target:.12g} needs a stick disc smaller than n_terms={n_terms} resolves "
             f"(b < {b_lo:.3g}); the stick radius and fields are inaccurate",
             ResolutionWarning,
-            stacklevel=4,
+            stacklevel=5,  # solve -> the method class (backends) -> here
         )
     b = optimize.brentq(residual, lower, 1.0, xtol=B_TOLERANCE, rtol=_RELATIVE_TOLERANCE)
     if lower == b_lo:  # otherwise the warning above has been given

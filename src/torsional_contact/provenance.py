@@ -31,7 +31,7 @@ def provenance(**fields) -> dict:
         import mpmath
 
         versions["mpmath_backend"] = mpmath.libmp.BACKEND
-    except ImportError:  # pragma: no cover - mpmath is a dependency
+    except ImportError:  # mpmath is optional (the ``reference`` extra): a core install records None
         versions["mpmath_backend"] = None
     return {
         **fields,

@@ -1,7 +1,7 @@
 """Gauss-Legendre rules shared by the solvers, the histories and the checks (double precision).
 
 Lengths in the cylinder radius a.  The arbitrary-precision rules of the verification
-wing are in ``verification/quadrature.py``.
+wing are in ``verification/quadrature_mp.py``.
 """
 
 from __future__ import annotations

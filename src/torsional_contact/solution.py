@@ -1,4 +1,6 @@
-"""The public ``solve`` function and its ``Solution``: regimes, methods, fields anywhere.
+"""The ``Solution`` of ``solve`` and the cylinders' solve (``solve_cylinder``): regimes, methods, fields anywhere.
+
+``solve`` itself (``dispatch``) picks the model: ``solve_cylinder`` here, or ``half_space``.
 
 Units: r, z in the cylinder radius a; T* = 2T/(f F a) (eq. 32); tractions and stresses in
 f p0 (p0 = F / (pi a^2)); displacements and slip in f p0 a / mu; omega (rigid rotation of
@@ -29,8 +31,9 @@ Methods
 * ``complete`` / ``published``: the weak forms of ``solvers.weak_form`` at ``n_terms``
   (1 to ``MAX_SERIES_TERMS``).
 
-Each kind of solution is a backend of ``backends`` with one small interface; ``Solution``
-adds the sign, the regime and the fields off the interface.  The inverse problem
+Each kind of solution is a backend of ``backends`` with one small interface (``backends.Backend``);
+each method is a backend class in the table ``METHODS`` (``backends.Method``), through which
+``solve`` dispatches.  ``Solution`` adds the sign, the regime and the fields off the interface.  The inverse problem
 (torque -> b) is in ``inverse``.
 """
 
@@ -43,18 +46,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import asymptotics, fields, models, validation
-from .backends import AbelFredholm, Asymptotic, Bilateral, Series, Spinning
+from . import fields, validation
+from .backends import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Bilateral, Series
 from .criteria import GROSS_SLIP_TORQUE
 from .diagnostics import TruncationWarning, UnphysicalResultWarning
-from .inverse import invert_abel_fredholm, invert_series
-from .solvers.abel_fredholm import solve_fast
-from .solvers.weak_form import MAX_SERIES_TERMS, minimum_inverse_terms, solve_series
-from .solvers.weak_form import METHODS as SERIES_METHODS
+from .solvers.weak_form import MAX_SERIES_TERMS
 
 __all__ = [
     "Solution",
-    "solve",
+    "solve_cylinder",
     "with_tolerance",
     "METHODS",
     "DEFAULT_METHOD",
@@ -62,12 +62,6 @@ __all__ = [
     "MAX_SERIES_TERMS",
     "torque_curve",
 ]
-
-#: Every method ``solve`` accepts; the first is the default.
-METHODS = ("fast",) + SERIES_METHODS
-DEFAULT_METHOD = "fast"
-#: The paper's truncation (section 4), the default of the series methods.
-DEFAULT_N_TERMS = 145
 
 
 @dataclass(frozen=True)
@@ -231,7 +225,7 @@ def _flat_points(r, z):
 
 def _solution(backend, sign, regime, method, n_terms, tolerance, torque=None) -> Solution:
     """A Solution from a positive-torque backend; ``torque`` overrides the reported T* (inverse problem)."""
-    omega = math.nan if method == "published" else backend.rigid_rotation
+    omega = backend.rigid_rotation if METHODS[method].has_rigid_rotation else math.nan
     return Solution(
         stick_radius=backend.stick_radius,
         torque=sign * backend.torque if torque is None else torque,
@@ -247,89 +241,17 @@ def _solution(backend, sign, regime, method, n_terms, tolerance, torque=None) ->
 def _for_stick_radius(b: float, method: str, n_terms) -> tuple:
     """(backend, regime) for 0 <= b < 1, positive torque."""
     regime = "gross-slip" if b == 0.0 else "partial-slip"
-    if method != "fast":
-        return Series(solve_series(b, method, n_terms)), regime
-    return _fast_backend(b, n_terms), regime
+    return METHODS[method].at_stick_radius(b, n_terms), regime
 
 
-def _fast_backend(b: float, n_terms, solution=None):
-    """The default method at 0 <= b < 1: Abel-Fredholm between the switches of ``asymptotics``."""
-    if b == 0.0:
-        return Spinning(solve_fast(0.0), n_terms)
-    if b < asymptotics.SPINNING_SWITCH:
-        return Asymptotic(asymptotics.small_stick_disc(b), n_terms)
-    delta = 1.0 - b
-    if delta < asymptotics.ONSET_FIELDS:
-        return Asymptotic(asymptotics.edge_crack(b), n_terms)
-    solution = solve_fast(b) if solution is None else solution
-    if delta < asymptotics.ONSET_SCALARS:  # (S1), (S2): exact to rounding, the solver to ~1e-12
-        torque = float(asymptotics.onset_torque(delta))
-        solution = dataclasses.replace(
-            solution,
-            torque=torque,
-            rigid_rotation=float(asymptotics.onset_rotation(delta)),
-            torque_deficit=GROSS_SLIP_TORQUE - torque,
-        )
-    return AbelFredholm(solution, n_terms)
-
-
-def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None, model=None) -> Solution:
-    """Solve the partial-slip torsion problem for a stick radius or a torque.
-
-    Parameters
-    ----------
-    stick_radius : float, optional
-        b/a in [0, 1] (1: the whole face sticks, T* = 1; 0: spinning, T* = 4/3).
-        Gives a positive torque.
-    torque : float, optional
-        T* = 2T/(f F a) in [-4/3, 4/3].  Exactly one of ``stick_radius`` and
-        ``torque`` must be given.
-    method : {"fast", "complete", "published"}, optional
-        ``solvers.abel_fredholm`` (default): the Abel-Fredholm method (the most accurate);
-        ``published``: eq. (38) exactly as printed; ``complete``: the same weak form
-        with the missing rigid-rotation mode.
-    n_terms : int, optional
-        Series methods: number of eigenfunctions, 1 to ``MAX_SERIES_TERMS`` = 10000
-        (default 145, the paper's; memory ~16 N^2 bytes).  ``fast``: number of Dini terms
-        for fields at z > 0, 1 to ``fields.MAX_FIELD_TERMS`` = 4096 (default: chosen per call).
-    tolerance : float, optional
-        Absolute accuracy of the stresses (f p0) and displacements (f p0 a / mu) off the
-        interface; default 1e-12.  A figure needs ~1e-4 and sums fewer terms.
-    model : {"cylinder", "half-space"}, optional
-        ``cylinder`` (default): the two flat-ended cylinders.  ``half-space``: two
-        elastically similar half-spaces under the same uniform pressure over r < a, in the
-        same units (``half_space``; closed-form: no ``method``, no ``n_terms``); it slips
-        at any torque (b < 1 for T* > 0) and ``rigid_rotation`` is the far-field rotation
-        of each body, half the relative twist.
-
-    Returns
-    -------
-    Solution
-
-    Raises
-    ------
-    ValueError
-        Naming the argument and its valid range, for non-finite or out-of-range
-        numbers, |torque| > 4/3 (the cylinders spin: no static solution), both or
-        neither of stick_radius/torque, n_terms outside [1, MAX_SERIES_TERMS] (weak
-        forms) or [1, fields.MAX_FIELD_TERMS] (``fast``), tolerance not in [0, 1], an
-        unknown method, or an inverse problem that the weak form's n_terms cannot resolve;
-        an unknown model, or a method or n_terms with model="half-space".
-
-    Warns
-    -----
-    AccuracyWarning (ResolutionWarning, IllConditioningWarning, TruncationWarning) and
-    UnphysicalResultWarning, each naming what is lost; see the README.
-    """
-    if model is not None and models.validated(model, method, n_terms) != models.CYLINDER:
-        from .half_space import solve_half_space
-
-        return solve_half_space(stick_radius, torque, method=method, n_terms=n_terms, tolerance=tolerance)
+def solve_cylinder(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None) -> Solution:
+    """``solve`` for the cylinders (model "cylinder"); the arguments, errors and warnings are those of
+    ``dispatch.solve``, which also validates the model."""
     method = validation.choice("method", DEFAULT_METHOD if method is None else method, METHODS)
-    if n_terms is not None or method != "fast":
-        maximum = fields.MAX_FIELD_TERMS if method == "fast" else MAX_SERIES_TERMS
+    kind = METHODS[method]
+    if n_terms is not None or kind.default_n_terms is not None:
         n_terms = validation.positive_int(
-            "n_terms", DEFAULT_N_TERMS if n_terms is None else n_terms, maximum,
+            "n_terms", kind.default_n_terms if n_terms is None else n_terms, kind.max_n_terms,
             note=f" (method {method!r}; memory and time grow like n_terms^2)")
     tolerance = validation.real_number(
         "tolerance", fields.DEFAULT_TOLERANCE if tolerance is None else tolerance, 0.0, 1.0)
@@ -350,23 +272,7 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
     if magnitude >= GROSS_SLIP_TORQUE * (1 - validation.TORQUE_TOLERANCE):
         backend, _ = _for_stick_radius(0.0, method, n_terms)
         return _solution(backend, sign, "gross-slip", method, n_terms, tolerance)
-    if method == "fast":
-        excess = magnitude - 1.0
-        fs = None
-        if excess > float(asymptotics.onset_torque(asymptotics.ONSET_SCALARS)) - 1.0:
-            fs = invert_abel_fredholm(magnitude)
-        if fs is None:  # the small-slip expansion (S1), inverted exactly
-            backend = _fast_backend(1.0 - float(asymptotics.onset_slip_width(excess)), n_terms)
-        else:
-            backend = _fast_backend(fs.stick_radius, n_terms, fs)
-    else:
-        minimum = minimum_inverse_terms()
-        if n_terms < minimum:
-            raise ValueError(
-                f"n_terms must be >= {minimum} for method {method!r} with a torque, got {n_terms}: fewer terms "
-                "resolve no stick radius (stick disc and slip annulus each need 10 wavelengths of the highest term)"
-            )
-        backend = Series(invert_series(magnitude, method, n_terms))
+    backend = kind.at_torque(magnitude, n_terms)
     # Report the torque asked for; the fields use the backend's own T*(b), which differs
     # from it by the root-finding tolerance (about 1e-12 or less).
     return _solution(backend, sign, "partial-slip", method, n_terms, tolerance, torque=t)
@@ -375,7 +281,7 @@ def solve(stick_radius=None, torque=None, *, method=None, n_terms=None, toleranc
 def torque_curve(stick_radii, *, method=None, n_terms=None) -> np.ndarray:
     """T*(b) for an array of stick radii (Fig. 3), one solve per radius."""
     radii = np.asarray(stick_radii, dtype=float)
-    torques = [solve(stick_radius=float(b), method=method, n_terms=n_terms).torque for b in radii.ravel()]
+    torques = [solve_cylinder(stick_radius=float(b), method=method, n_terms=n_terms).torque for b in radii.ravel()]
     return np.array(torques).reshape(radii.shape)
 
 

@@ -203,7 +203,7 @@ class Specimen:
         Raises ValueError naming the argument: both or neither, a wrong dimension, |T| above
         the gross-slip torque 2 f F a / 3 (the cylinders spin), a stick radius outside [0, a].
         """
-        from .solution import solve
+        from .dispatch import solve
 
         if (torque is None) == (stick_radius is None):
             raise ValueError("give exactly one of torque (N m) and stick_radius (a length in [0, radius])")
@@ -267,7 +267,7 @@ class Specimen:
         rule 5).  Raises ValueError at or beyond the gross-slip torque (infinite: the
         cylinders spin).
         """
-        from .models import monotonic_model
+        from .histories.monotonic import monotonic_model
 
         t = self._checked_torque("torque_amplitude", torque_amplitude)
         if abs(t) >= GROSS_SLIP_TORQUE:

@@ -1,7 +1,10 @@
 """Which library files a workflow script depends on: the transitive closure of its imports.
 
 Used by workflow/rules/common.smk (each rule's ``lib`` input) and by the tests.  Reads the
-sources with ``ast`` only; imports nothing from the package.
+sources with ``ast`` only; imports nothing from the package.  Library files are the package's
+modules under src/ and the workflow's own helper modules beside the scripts (``_plotting.py``,
+``_timing.py`` in workflow/scripts/: a script imports them by their bare name, its folder being
+first on ``sys.path``).
 """
 
 import ast
@@ -76,6 +79,9 @@ def _imports_uncached(path):
     package = here if path.name == "__init__.py" else here.rpartition(".")[0]
     found = set()
     for node in _import_statements(tree.body):
+        if not inside and not getattr(node, "level", 0):  # a helper module beside a workflow script
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
+            found.update(_local(path, name) for name in names if (path.parent / f"{name}.py").exists())
         if isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] == PACKAGE)
             continue
@@ -101,6 +107,20 @@ def _imports_uncached(path):
     return found
 
 
+#: Prefix of the names ``_imports`` gives to helper modules beside a workflow script (file paths).
+_LOCAL = "file:"
+
+
+def _local(script, name):
+    """The name of the helper module ``name`` beside ``script`` (its path, marked)."""
+    return _LOCAL + str(Path(script).parent / f"{name}.py")
+
+
+def _file(name):
+    """The file of a package module or of a marked helper module, or None."""
+    return Path(name[len(_LOCAL):]) if name.startswith(_LOCAL) else _module_file(name)
+
+
 @functools.cache
 def _library_files_cached(script):
     return tuple(_library_files(script))
@@ -119,13 +139,14 @@ def _library_files(script):
     todo, seen = list(_imports(script)), set()
     while todo:
         name = todo.pop()
-        if name in seen or _module_file(name) is None:
+        if name in seen or _file(name) is None:
             continue
         seen.add(name)
-        parts = name.split(".")
-        todo.extend(".".join(parts[:k]) for k in range(1, len(parts)))
-        todo.extend(_imports(_module_file(name)) - seen)
-    files = {_module_file(name) for name in seen}
+        if not name.startswith(_LOCAL):
+            parts = name.split(".")
+            todo.extend(".".join(parts[:k]) for k in range(1, len(parts)))
+        todo.extend(_imports(_file(name)) - seen)
+    files = {_file(name) for name in seen}
     # data shipped inside a package the script uses (e.g. the tabulated monotonic curves)
     files |= {data for f in list(files) if f.name == "__init__.py" for data in f.parent.glob("*.json")}
     return sorted(str(f) for f in files)

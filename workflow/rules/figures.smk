@@ -1,7 +1,5 @@
 # One rule per figure; each calls one script in workflow/scripts/ and writes PDF + PNG.
-
-FIGURE_METHOD = "" if config["method"] == "fast" else f"--n-terms {config['n_terms']}"
-
+# --n-terms: N of a weak form; a method whose interface values are exact ignores it (_plotting.method_options).
 
 rule fig2_contours:
     input:
@@ -12,7 +10,7 @@ rule fig2_contours:
         **fig("fig2_{quantity}", "fig2"),
     params:
         b=config["contours"]["stick_radius"],
-        n=FIGURE_METHOD,
+        n=config["n_terms"],
         method=config["method"],
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
@@ -25,7 +23,7 @@ rule fig2_contours:
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radius {params.b} --method {params.method}"
-        " {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
+        " --n-terms {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
         " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
 
@@ -56,13 +54,16 @@ rule fig_schematic:
         lib=lib("workflow/scripts/fig_schematic.py"),
     output:
         **fig("fig1_schematic", "fig1"),
+    params:
+        b=config["schematic"]["stick_radius"],
     log:
         logfile("fig1_schematic"),
     resources:
         runtime=2,
         mem_mb=500,
     shell:
-        "python {input.script} --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
+        "python {input.script} --stick-radius {params.b} --style {input.style} --pdf {output.pdf}"
+        " --png {output.png} > {log} 2>&1"
 
 
 rule fig4_interface:
@@ -74,7 +75,7 @@ rule fig4_interface:
         **fig("fig4_{quantity}", "fig4"),
     params:
         radii=config["interface"]["stick_radii"],
-        n=FIGURE_METHOD,
+        n=config["n_terms"],
         method=config["method"],
         points=config["interface"]["n_points"],
     log:
@@ -84,7 +85,7 @@ rule fig4_interface:
         mem_mb=1000,
     shell:
         "python {input.script} --quantity {wildcards.quantity} --stick-radii {params.radii} --method {params.method}"
-        " {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " --n-terms {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
         " > {log} 2>&1"
 
 

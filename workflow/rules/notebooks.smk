@@ -23,6 +23,8 @@ rule notebook:
     output:
         ipynb=f"{OUT}/notebooks/{{notebook}}.ipynb",
         html=report(f"{OUT}/notebooks/{{notebook}}.html", caption="../report/notebook.rst", category="Notebooks"),
+    params:
+        timeout=config["notebooks"]["timeout"],
     log:
         logfile("notebook_{notebook}"),
     wildcard_constraints:
@@ -32,6 +34,7 @@ rule notebook:
         mem_mb=2000,
     shell:
         "python {input.script} --notebook {input.source} --results {OUT} --ipynb {output.ipynb}"
+        " --timeout {params.timeout}"
         " --html {output.html} > {log} 2>&1"
 
 

@@ -51,13 +51,15 @@ rule convergence_table:
     params:
         b=config["convergence"]["stick_radius"],
         n=config["convergence"]["max_n_terms"],
+        method=config["convergence"]["method"],
     log:
         logfile("convergence_table"),
     resources:
         runtime=10,
         mem_mb=3000,
     shell:
-        "python {input.script} --stick-radius {params.b} --max-n {params.n} --json {output.json}"
+        "python {input.script} --stick-radius {params.b} --max-n {params.n} --method {params.method}"
+        " --json {output.json}"
         " --macros {output.macros} > {log} 2>&1"
 
 
@@ -72,6 +74,7 @@ rule history_data:
         n=config["history"]["n_terms"],
         fit_n=config["history"]["fit_n_terms"],
         points=config["history"]["n_points"],
+        method=config["history"]["method"],
         t_max=config["history"]["t_max"],
         stages=config["history"]["stages"],
         loops=[t for pair in config["history"]["loops"] for t in pair],
@@ -81,7 +84,7 @@ rule history_data:
         runtime=10,
         mem_mb=2000,
     shell:
-        "python {input.script} --n-terms {params.n} --fit-n-terms {params.fit_n} --n-points {params.points}"
+        "python {input.script} --method {params.method} --n-terms {params.n} --fit-n-terms {params.fit_n} --n-points {params.points}"
         " --t-max {params.t_max} --stages {params.stages} --loops {params.loops}"
         " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
@@ -132,6 +135,7 @@ rule benchmark_scenes:
         nr=config["contours"]["nr"],
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
+        repeats=config["benchmark_scenes"]["repeats"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
     priority: 100  # first, while nothing else runs (it needs both cores)
     log:
@@ -141,7 +145,7 @@ rule benchmark_scenes:
         mem_mb=2000,
     shell:
         "{params.blas} python {input.script} --stick-radius {params.b} --plot-tolerance {params.tol}"
-        " --nr {params.nr} --nz {params.nz} --z-max {params.z_max}"
+        " --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --repeats {params.repeats}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
 
@@ -152,7 +156,7 @@ rule benchmark_histories:
         # the script times the ``history`` subcommand in subprocesses: the command line's entry
         # points and what that subcommand loads (not the lazily imported reference or errata)
         cli=["src/torsional_contact/__main__.py", "src/torsional_contact/io/cli.py",
-             "src/torsional_contact/io/history_signal.py", *lib("src/torsional_contact/io/history_signal.py")],
+             "src/torsional_contact/io/history_command.py", *lib("src/torsional_contact/io/history_command.py")],
     output:
         json=f"{OUT}/data/benchmark_histories.json",
         macros=f"{OUT}/macros/benchmark_histories.tex",
@@ -164,6 +168,7 @@ rule benchmark_histories:
         seed=config["benchmark_histories"]["seed"],
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
+        baseline=config["benchmark_histories"]["baseline_points"],
     threads: 2  # holds both cores: the timings are not disturbed by a parallel job
     priority: 100  # first, while nothing else runs (it needs both cores)
     log:
@@ -174,7 +179,8 @@ rule benchmark_histories:
     shell:
         "{params.blas} python {input.script} --samples {params.samples} --cycles {params.cycles}"
         " --walk-reversals {params.reversals} --seed {params.seed} --turning-points {params.points}"
-        " --repeats {params.repeats} --json {output.json} --macros {output.macros} > {log} 2>&1"
+        " --repeats {params.repeats} --baseline-points {params.baseline} --json {output.json}"
+        " --macros {output.macros} > {log} 2>&1"
 
 
 rule curve_accuracy:
@@ -186,13 +192,14 @@ rule curve_accuracy:
         macros=f"{OUT}/macros/curve_accuracy.tex",
     params:
         per_panel=config["curve_accuracy"]["per_panel"],
+        seed=config["curve_accuracy"]["seed"],
     log:
         logfile("curve_accuracy"),
     resources:
         runtime=10,
         mem_mb=1000,
     shell:
-        "python {input.script} --per-panel {params.per_panel} --json {output.json} --macros {output.macros}"
+        "python {input.script} --per-panel {params.per_panel} --seed {params.seed} --json {output.json} --macros {output.macros}"
         " > {log} 2>&1"
 
 

@@ -98,7 +98,8 @@ rule reference_timing:
         runtime=2,
         mem_mb=500,
     shell:
-        "python {input.script} --timings {input.timings} --key ref-seconds --macros {output.macros} > {log} 2>&1"
+        "python {input.script} --timings {input.timings} --key ref-seconds --statistic sum --field seconds_total"
+        " --macros {output.macros} > {log} 2>&1"
 
 
 WILDCARDS["reference_weak_form"] = {"method": WEAK_FORMS}
@@ -115,6 +116,9 @@ rule fem_validation:
     params:
         radii=config["fem_validation"]["stick_radii"],
         levels=config["fem_validation"]["mesh_levels"],
+        degree=config["fem_validation"]["degree"],
+        truncation=config["fem_validation"]["truncation"],
+        direct="--direct" if config["fem_validation"]["direct"] else "--no-direct",
     priority: 20  # long: start early
     log:
         logfile("fem_validation"),
@@ -122,7 +126,8 @@ rule fem_validation:
         runtime=20,
         mem_mb=3000,
     shell:
-        "python {input.script} --stick-radii {params.radii} --mesh-levels {params.levels}"
+        "python {input.script} --stick-radii {params.radii} --mesh-levels {params.levels} --degree {params.degree}"
+        " --truncation {params.truncation} {params.direct}"
         " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
 

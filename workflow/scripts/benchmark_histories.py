@@ -105,7 +105,7 @@ def main():
     p.add_argument("--cycles", type=int, default=1000)
     p.add_argument("--walk-reversals", type=int, default=200_000)
     p.add_argument("--turning-points", type=int, default=1000)
-    p.add_argument("--baseline-points", type=int, default=4, help="turning points of the weak-form baseline")
+    p.add_argument("--baseline-points", type=int, required=True, help="turning points of the weak-form baseline")
     p.add_argument("--repeats", type=int, default=3)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--json", required=True)

@@ -11,10 +11,10 @@ import argparse
 import warnings
 
 import numpy as np
+from _timing import interleaved, machine, paired_ratio
 
 from torsional_contact import TruncationWarning, solve
 from torsional_contact.fields import dini_terms
-from torsional_contact.io.timing import interleaved, machine, paired_ratio
 from torsional_contact.provenance import latex_escape, write_json, write_macros, write_text
 
 TABLE_TOLERANCE = 1e-12
@@ -47,7 +47,7 @@ def main():
     p.add_argument("--nr", type=int, default=121)
     p.add_argument("--nz", type=int, default=101)
     p.add_argument("--z-max", type=float, default=1.0)
-    p.add_argument("--repeats", type=int, default=5, help="interleaved rounds")
+    p.add_argument("--repeats", type=int, required=True, help="interleaved rounds")
     p.add_argument("--json", required=True)
     p.add_argument("--tex", required=True)
     p.add_argument("--macros", required=True)

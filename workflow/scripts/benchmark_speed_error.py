@@ -14,12 +14,12 @@ import argparse
 import warnings
 
 import numpy as np
+from _timing import format_ratio, format_seconds, interleaved, machine, paired_ratio
 
 from torsional_contact import fields, solve
 from torsional_contact.diagnostics import TorsionalContactWarning
-from torsional_contact.io.timing import format_ratio, format_seconds, interleaved, machine, paired_ratio
 from torsional_contact.provenance import latex_escape, write_json, write_macros
-from torsional_contact.solvers.abel_fredholm import default_nodes, solve_fast
+from torsional_contact.solvers.abel_fredholm import default_nodes, solve_abel_fredholm
 from torsional_contact.solvers.weak_form import solve_series
 from torsional_contact.typeset import sci
 from torsional_contact.verification import reference
@@ -37,10 +37,10 @@ def _series_solver(b, method, n):
 
 
 def benchmark(b, n_terms_list, nodes_list, rounds, r_grid):
-    exact = solve_fast(b, 2 * default_nodes(b))
+    exact = solve_abel_fredholm(b, 2 * default_nodes(b))
     q_exact = exact.interface_traction(r_grid)
     cases = {(m, n): _series_solver(b, m, n) for m in ("published", "complete") for n in n_terms_list}
-    cases.update({("fast", n): (lambda n=n: solve_fast(b, n)) for n in nodes_list})
+    cases.update({("fast", n): (lambda n=n: solve_abel_fredholm(b, n)) for n in nodes_list})
     timings = interleaved({f"{m}:{n}": run for (m, n), run in cases.items()}, rounds, budget=60.0)
     base = timings[f"{BASELINE[0]}:{BASELINE[1]}"]
     rows = []
@@ -87,18 +87,18 @@ def targets(rounds, n_radii=49, n_curve=200, n_torques=17):
     complete weak form at N = 145 (interleaved); the inverse problem (stick radius for each of
     ``n_torques`` torques) and its torque residual."""
     radii = np.linspace(0.02, 0.98, n_radii)
-    per_radius = interleaved({f"{b:.4f}": (lambda b=b: solve_fast(b)) for b in radii}, rounds)
+    per_radius = interleaved({f"{b:.4f}": (lambda b=b: solve_abel_fredholm(b)) for b in radii}, rounds)
     medians = np.array([per_radius[f"{b:.4f}"].median for b in radii])
     curve = np.linspace(0.005, 0.995, n_curve)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", TorsionalContactWarning)
-        curves = interleaved({"fast": lambda: [solve_fast(b).torque for b in curve],
+        curves = interleaved({"fast": lambda: [solve_abel_fredholm(b).torque for b in curve],
                               "complete145": lambda: [solve_series(b, "complete", 145).torque for b in curve]},
                              3, budget=30.0)
     solve(torque=1.2)  # the first inverse solve of a process may build tables; the steady state is timed here
     torques = np.linspace(1.01, 1.33, n_torques)
     inverse = interleaved({f"{t:.2f}": (lambda t=t: solve(torque=t)) for t in torques}, rounds)
-    errors = [abs(solve_fast(solve(torque=t).stick_radius).torque - t) for t in torques]
+    errors = [abs(solve_abel_fredholm(solve(torque=t).stick_radius).torque - t) for t in torques]
     return {
         "per_radius": {"median": float(np.median(medians)), "max": float(medians.max()),
                        "worst_b": float(radii[int(np.argmax(medians))])},

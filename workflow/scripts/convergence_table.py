@@ -15,7 +15,7 @@ from torsional_contact.verification.convergence import format_table, n_terms_stu
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--stick-radius", type=float, default=0.6)
-    p.add_argument("--method", default="complete")
+    p.add_argument("--method", required=True, help="the weak form studied (published or complete)")
     p.add_argument("--max-n", type=int, default=2320)
     p.add_argument("--json", help="JSON file (written atomically)")
     p.add_argument("--macros")

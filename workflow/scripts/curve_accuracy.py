@@ -20,17 +20,17 @@ from scipy import optimize
 
 from torsional_contact import ResolutionWarning
 from torsional_contact.criteria import spinning_deficit
-from torsional_contact.curves import loading_work, monotonic_curves
+from torsional_contact.curves import abel_fredholm_loading_work, monotonic_curves
 from torsional_contact.histories import dissipation_from_loop_area, dissipation_per_cycle
 from torsional_contact.provenance import write_json, write_macros
-from torsional_contact.solvers.abel_fredholm import solve_fast
+from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.typeset import sci
 
 
 def direct(b):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
-        return solve_fast(b)
+        return solve_abel_fredholm(b)
 
 
 def by_radius(curves, per_panel, rng):
@@ -39,7 +39,7 @@ def by_radius(curves, per_panel, rng):
     for lo, hi in zip(edges[:-1], edges[1:], strict=True):
         for b in lo + (hi - lo) * rng.uniform(0.02, 0.98, per_panel):
             s = direct(b)
-            w = loading_work(s)
+            w = abel_fredholm_loading_work(s)
             rows.append({"b": b, "torque": abs(curves.torque(b) - s.torque),
                          "torque_gap_rel": abs(curves.torque_gap(b) / s.torque_deficit - 1),
                          "rigid_rotation": abs(curves.rotation_at_radius(b) - s.rigid_rotation),
@@ -74,14 +74,14 @@ def by_torque(curves, per_panel, rng):
                      # rounding of tau moves b by this much (None where dT*/db vanishes to rounding, b -> 0)
                      "conditioning": float(np.spacing(tau)) / slope if slope > 0 else None,
                      "rigid_rotation": abs(curves.rotation(tau) - s.rigid_rotation),
-                     "loading_work_rel": abs(curves.work(tau) / loading_work(s) - 1)})
+                     "loading_work_rel": abs(curves.work(tau) / abel_fredholm_loading_work(s) - 1)})
     return rows
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--per-panel", type=int, default=2)
-    p.add_argument("--seed", type=int, default=2024)
+    p.add_argument("--seed", type=int, required=True, help="of the random test points")
     p.add_argument("--json", required=True)
     p.add_argument("--macros")
     a = p.parse_args()

@@ -52,9 +52,9 @@ def parse_arguments(argv=None):
     p.add_argument("--mesh-levels", type=int, nargs="+", default=[4, 8, 16],
                    help="increasing mesh levels >= 3, best a geometric sequence (the observed order assumes one); "
                         "the last is the reported solution")
-    p.add_argument("--degree", type=int, default=4, help=f"Lagrange degree, one of {sorted(ELEMENTS)}")
-    p.add_argument("--truncation", type=float, default=3.0, help="height L of the meshed cylinder (> 1)")
-    p.add_argument("--direct", action=argparse.BooleanOptionalAction, default=True,
+    p.add_argument("--degree", type=int, required=True, help=f"Lagrange degree, one of {sorted(ELEMENTS)}")
+    p.add_argument("--truncation", type=float, required=True, help="height L of the meshed cylinder (> 1)")
+    p.add_argument("--direct", action=argparse.BooleanOptionalAction, required=True,
                    help="also run the direct collocation method (about 10 s per radius)")
     p.add_argument("--json")
     p.add_argument("--tex")

@@ -6,9 +6,9 @@ truncated at the plot tolerance (default 1e-4 of f p0).
 
 
 import numpy as np
+from _plotting import figure_parser, method_options, plt, save_figure, use_style
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 LABELS = {
     "sigma_zt": r"$\sigma_{\theta z}/f p_0$",
@@ -27,7 +27,7 @@ def main():
     a = p.parse_args()
 
     # plot accuracy, not table accuracy: fewer Dini terms off the interface
-    s = solve(stick_radius=a.stick_radius, method=a.method, n_terms=a.n_terms, tolerance=a.tolerance)
+    s = solve(stick_radius=a.stick_radius, tolerance=a.tolerance, **method_options(a))
     r = np.linspace(0.0, 1.0, a.nr)
     z = np.linspace(0.0, a.z_max, a.nz)
     rr, zz = np.meshgrid(r, z)

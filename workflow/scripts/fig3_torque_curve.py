@@ -10,8 +10,7 @@ frame and the exit is marked with an arrow head.
 import io
 
 import numpy as np
-
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, plt, save_figure, use_style
 
 #: Plotted T* range: slip onset to a little beyond spinning.
 T_RANGE = (0.98, 1.5)

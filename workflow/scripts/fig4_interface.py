@@ -3,9 +3,9 @@
 
 
 import numpy as np
+from _plotting import figure_parser, method_label, method_options, plt, save_figure, use_style
 
 from torsional_contact import solve
-from torsional_contact.io.plotting import figure_parser, method_label, plt, save_figure, use_style
 
 LABELS = {
     "traction": r"$\sigma_{\theta z}(r,0)/f p_0$",
@@ -24,7 +24,7 @@ def main():
     use_style(a.style)
     fig, ax = plt.subplots(figsize=(3.1, 2.45))  # printed at half the text width: fonts at nominal size
     for b in a.stick_radii:
-        s = solve(stick_radius=b, method=a.method, n_terms=a.n_terms)
+        s = solve(stick_radius=b, **method_options(a))
         if a.quantity == "traction":
             y = s.traction(r)
         elif a.quantity == "sigma_rt":

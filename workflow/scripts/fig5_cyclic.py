@@ -7,8 +7,7 @@ setting (complete weak form, N = 145), when the data carry it.
 
 
 import numpy as np
-
-from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, plt, save_figure, use_style
 
 
 def main():

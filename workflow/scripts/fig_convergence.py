@@ -4,8 +4,7 @@ Abel-Fredholm method (node sweep); reads the benchmark JSON."""
 
 
 import numpy as np
-
-from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, plt, save_figure, use_style
 
 FLOOR = 1e-16  # errors at or below it (rounding level, exact zeros included) are drawn here, open markers
 

@@ -9,10 +9,10 @@ elastic compliance 3 pi T*/16, and phi - 3 pi T*/16 is the part due to slip.
 """
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.half_space import closed_form as hs
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

@@ -8,11 +8,11 @@ f_fit / f solving kappa^2 W_hs(A/kappa) = W_cyl(A) (``half_space.comparison``).
 """
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.half_space import closed_form as hs
 from torsional_contact.half_space.comparison import apparent_friction_ratio
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

@@ -5,7 +5,7 @@ Units: omega in f p0 / mu; energy per cycle in (f p0)^2 a^3 / mu.  Reads the his
 """
 
 
-from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, plt, save_figure, use_style
 
 
 def main():

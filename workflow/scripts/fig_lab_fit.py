@@ -9,10 +9,10 @@ import json
 import warnings
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact import fit_loop
 from torsional_contact.io.lab_files import read_lab_columns
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

@@ -11,10 +11,10 @@ record's (notebooks/data/lab_loop.json).
 import json
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact import Specimen
 from torsional_contact.curves import monotonic_curves
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

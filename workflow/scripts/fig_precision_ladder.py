@@ -2,7 +2,7 @@
 converged 30-digit solution over the stick radius (T*, omega, interface traction and slip), and
 the truth's own convergence in the number of Nystrom nodes; reads precision_ladder.json."""
 
-from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, plt, save_figure, use_style
 
 FLOOR = 1e-18  # exact zeros are drawn here, with open markers (said in the legend)
 CONVERGENCE_FLOOR = 1e-50  # the same in panel (c) (the truth carries ~45 digits)

@@ -13,11 +13,11 @@ Values outside a panel's range are drawn at its edge with a triangle marker.
 import warnings
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact import solve
-from torsional_contact.backends import Series
+from torsional_contact.backends import Published
 from torsional_contact.diagnostics import UnphysicalResultWarning
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 from torsional_contact.solvers.weak_form import solve_series
 
 #: Smallest difference drawn in the lower panels (below it: rounding of the converged solution).
@@ -28,7 +28,7 @@ def printed_scheme(b, n_terms, closure):
     """(slip, traction, T*) callables of the printed system with a closure."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UnphysicalResultWarning)
-        backend = Series(solve_series(b, "published", n_terms, closure))
+        backend = Published(solve_series(b, "published", n_terms, closure))
     return (lambda r: 2.0 * backend.displacement(r)), backend.traction, backend.torque
 
 

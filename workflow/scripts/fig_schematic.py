@@ -2,9 +2,8 @@
 twisted by T (side view), and the interface: stick disc r < b, slip annulus b < r < a (plan view)."""
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 from matplotlib import patches
-
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def side_view(ax):
@@ -64,7 +63,7 @@ def plan_view(ax, b=0.6):
 
 def main():
     p = figure_parser(__doc__)
-    p.add_argument("--stick-radius", type=float, default=0.6, help="b/a drawn in the plan view")
+    p.add_argument("--stick-radius", type=float, required=True, help="b/a drawn in the plan view")
     a = p.parse_args()
     use_style(a.style)
     fig, (left, right) = plt.subplots(1, 2, figsize=(6.0, 3.3), gridspec_kw={"width_ratios": [1.0, 1.1]})

@@ -7,9 +7,9 @@ shear).  Slip starts on tau = f sigma (T* = 1), the cylinders spin on tau = 4 f 
 
 
 import numpy as np
+from _plotting import figure_parser, plt, save_figure, use_style
 
 from torsional_contact.criteria import von_mises_torque_limit
-from torsional_contact.io.plotting import figure_parser, plt, save_figure, use_style
 
 
 def main():

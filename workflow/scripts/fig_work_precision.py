@@ -2,7 +2,7 @@
 interface traction (units f p0), for each method; reads the benchmark JSON."""
 
 
-from torsional_contact.io.plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, plt, save_figure, use_style
 
 STYLE = {"published": ("s:", "reconstructed printed scheme, N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm, node sweep"),

@@ -30,7 +30,7 @@ def main():
     p.add_argument("--results", required=True, help="the build's output folder, e.g. results")
     p.add_argument("--ipynb", required=True)
     p.add_argument("--html", required=True)
-    p.add_argument("--timeout", type=int, default=600, help="seconds per cell")
+    p.add_argument("--timeout", type=int, required=True, help="seconds per cell")
     a = p.parse_args()
     source = Path(a.notebook)
     workdir = source.parent

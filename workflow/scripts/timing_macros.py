@@ -14,8 +14,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--timings", nargs="+", required=True)
     p.add_argument("--key", required=True, help="macro name")
-    p.add_argument("--field", default="seconds_total", help="the time in each record")
-    p.add_argument("--statistic", choices=("sum", "max"), default="sum")
+    p.add_argument("--field", required=True, help="the time in each record")
+    p.add_argument("--statistic", choices=("sum", "max"), required=True, help="how the times add up")
     p.add_argument("--macros", required=True)
     a = p.parse_args()
     times = []

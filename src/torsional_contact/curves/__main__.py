@@ -1,5 +1,5 @@
 """Rebuild the shipped table of the monotonic curves: ``python -m torsional_contact.curves``."""
 
-from .table import _main
+from ._precompute.build_table import main
 
-_main()
+main()

@@ -5,8 +5,8 @@ Units: b in a; T* = 2T/(f F a); omega in f p0 / mu; W_mono in (f p0)^2 a^3 / mu.
 Everything the memory rules of ``histories`` need from the monotonic solution, besides
 the interface profiles, is the stick radius b(tau), the rigid rotation omega_m(tau) and the
 work against friction W_mono(tau) of a monotonic loading to 0 <= tau <= 4/3 (``curves.work``).
-They are piecewise Chebyshev series (``curves.piecewise``) built from the Abel-Fredholm
-solver (``curves.table``):
+They are piecewise Chebyshev series (``curves.piecewise``) of the shipped table
+(``curves.table``), which ``curves._precompute.build_table`` builds from the Abel-Fredholm solver:
 
 * by stick radius, on panels in b (the table's solves);
 * by torque, on the images of those panels: in tau itself where b >= 0.26, and in
@@ -40,9 +40,9 @@ import numpy as np
 from .. import asymptotics
 from ..criteria import GROSS_SLIP_TORQUE, spinning_deficit
 from .piecewise import Piecewise
-from .table import TABLE_PATH, lobatto_coefficients, read_table
+from .table import TABLE_PATH, read_table
 
-__all__ = ["MonotonicCurves", "monotonic_curves", "add_by_torque"]
+__all__ = ["MonotonicCurves", "monotonic_curves"]
 
 #: Relative distance to 4/3 that counts as spinning (``validation.TORQUE_TOLERANCE``).
 SPIN_TOLERANCE = 4 * np.finfo(float).eps
@@ -53,8 +53,8 @@ ONSET_DELTA = asymptotics.ONSET_SCALARS
 #: b at which the by-torque panels switch from tau to u = (4/3 - tau)^(1/3).
 U_SPLIT_RADIUS = 0.262144
 _OMEGA_ONSET = math.pi**3 / 12.0
-_BY_TORQUE_POINTS = 65
-_CURVES_BY_TORQUE = ("stick_radius", "rigid_rotation", "loading_work")
+#: The curves tabulated by torque.
+CURVES_BY_TORQUE = ("stick_radius", "rigid_rotation", "loading_work")
 
 
 def _onset_radius(excess):
@@ -87,10 +87,10 @@ class MonotonicCurves:
             "work_slope": -self.b_low * _first_panel_slope(low["loading_work"]),
         }
         by_torque = table.get("by_torque")
-        if by_torque is None:
-            by_torque = _by_torque(self)
-        self.u_curves = {n: Piecewise(by_torque["u_edges"], by_torque["u_panels"][n]) for n in _CURVES_BY_TORQUE}
-        self.t_curves = {n: Piecewise(by_torque["t_edges"], by_torque["t_panels"][n]) for n in _CURVES_BY_TORQUE}
+        if by_torque is None:  # the builder adds them (``_precompute.build_table.add_by_torque``)
+            raise ValueError("curve table without by-torque panels: rebuild it with python -m torsional_contact.curves")
+        self.u_curves = {n: Piecewise(by_torque["u_edges"], by_torque["u_panels"][n]) for n in CURVES_BY_TORQUE}
+        self.t_curves = {n: Piecewise(by_torque["t_edges"], by_torque["t_panels"][n]) for n in CURVES_BY_TORQUE}
         self.u_split = by_torque["u_edges"][-1]
         self.t_split = by_torque["t_edges"][-1]
 
@@ -223,46 +223,6 @@ def _first_panel_slope(curve: Piecewise) -> float:
     c = curve.coefficients[0]
     k = np.arange(c.size)
     return float(np.sum(c * (-1.0) ** (k + 1) * k**2)) * 2.0 / (curve.edges[1] - curve.edges[0])
-
-
-def _fit(values: np.ndarray, tolerance: float) -> list[float]:
-    coefficients = lobatto_coefficients(values)
-    bound = tolerance * max(1e-300, float(np.max(np.abs(values))))
-    keep = np.nonzero(np.abs(coefficients) > bound)[0]
-    return coefficients[: int(keep[-1]) + 1 if keep.size else 1].tolist()
-
-
-def _by_torque(curves: MonotonicCurves) -> dict:
-    """Panels by torque (module docstring): images of the radius panels, values through b(tau)."""
-    radius_edges = curves.by_radius["torque"].edges
-    split = int(np.argmin(np.abs(radius_edges - U_SPLIT_RADIUS)))
-    u_edges = np.cbrt(curves.torque_gap(radius_edges[: split + 1]))
-    t_edges = np.sort(curves.by_radius["torque"](radius_edges[split:]))  # the table's own T*(b) at its edges
-    x = np.cos(np.pi * np.arange(_BY_TORQUE_POINTS) / (_BY_TORQUE_POINTS - 1))
-    out = {"u_edges": u_edges.tolist(), "t_edges": t_edges.tolist(), "u_panels": {}, "t_panels": {}}
-    for key, edges, curve, target in (
-        ("u_panels", u_edges, curves.by_radius["torque_gap"], lambda v: v**3),
-        ("t_panels", t_edges, curves.by_radius["torque"], lambda v: v),
-    ):
-        lists = {name: [] for name in _CURVES_BY_TORQUE}
-        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
-            v = 0.5 * (hi - lo) * x + 0.5 * (hi + lo)
-            v[0], v[-1] = hi, lo
-            b = curve.solve(target(v))
-            lists["stick_radius"].append(_fit(b, 1e-16))
-            lists["rigid_rotation"].append(_fit(curves.rotation_at_radius(b), 1e-16))
-            lists["loading_work"].append(_fit(curves.work_at_radius(b), 1e-15))
-        out[key] = lists
-    return out
-
-
-def add_by_torque(table: dict) -> dict:
-    """The table with its by-torque panels (computed from the radius panels, no solves)."""
-    table = {k: v for k, v in table.items() if k != "by_torque"}
-    table["by_torque"] = _by_torque(MonotonicCurves({**table, "by_torque": {
-        "u_edges": [0.0, 1.0], "t_edges": [0.0, 1.0],
-        "u_panels": {n: [[0.0]] for n in _CURVES_BY_TORQUE}, "t_panels": {n: [[0.0]] for n in _CURVES_BY_TORQUE}}}))
-    return table
 
 
 @functools.lru_cache(maxsize=1)

@@ -1,183 +1,35 @@
-r"""The table of the monotonic curves: piecewise Chebyshev coefficients from the Abel-Fredholm solver.
+"""The shipped table of the monotonic curves (``monotonic_curves.json``): where it is and how it is read.
 
 Units: b in a; T* = 2T/(f F a); omega in f p0 / mu; W_mono in (f p0)^2 a^3 / mu.
 
-Layout
-------
-The curves T*(b), omega(b) and W_mono(b) (``curves.work``) are analytic on 0 < b < 1 but
-not at the ends: near b = 1 the slip annulus delta = 1 - b is an edge crack and the
-expansions carry delta^k ln(delta) terms (T* - 1 ~ (2/pi) delta, omega and W_mono ~ delta^3);
-near b = 0 omega ~ (1/2) ln(1/b) and 4/3 - T* ~ (16/(9 pi)) b^3 with b^2 ln b corrections.
-A polynomial in b converges only algebraically across such points, so the range
-[B_LOW, b_max] is cut into panels that are geometric toward both ends (ratio 4: each
-panel [x, 4x] in b or delta sees its end singularity at 5/3 half-widths from its centre,
-Bernstein parameter 3, ~33 points for 1e-16) and a few in the middle.  b_max = 1 - 1.6e-6
-is the largest stick radius the Abel-Fredholm method resolves (``MAX_NODES``); B_LOW = 1e-6
-has T*(B_LOW) = 4/3 in double precision, so every torque below 4/3 is covered.
-
-On every panel each curve is sampled at Chebyshev-Lobatto points, 9, 17, 33 or 65 of them
-(nested: doubling reuses the solves), until the last three Chebyshev coefficients fall
-below the tolerance (absolute 1e-15 for T* and omega, relative 1e-14 for W_mono); trailing
-coefficients below it are then dropped.  Building takes a few minutes (solves near b = 1
-take up to a second each), so the table is shipped with the package
-(``monotonic_curves.json``) and rebuilt by ``python -m torsional_contact.curves``; its
-accuracy at points that are not nodes is measured by tests/test_curves.py and by
-workflow/scripts/curve_accuracy.py.
+The table holds piecewise Chebyshev coefficients of T*(b), 4/3 - T*(b), omega(b) and W_mono(b)
+on panels in b that are geometric toward both ends, and of b, omega and W_mono by torque.
+It is built (a few minutes of Abel-Fredholm solves) by ``curves._precompute.build_table``,
+which documents its layout and tolerances, and rebuilt with ``python -m torsional_contact.curves``;
+``curves.interpolant`` evaluates it.  Its accuracy at points that are not nodes is measured by
+tests/test_curves.py and by workflow/scripts/curve_accuracy.py.
 """
 
 from __future__ import annotations
 
 import json
 import os
-import time
-import warnings
 
-import numpy as np
+__all__ = ["TABLE_PATH", "FORMAT", "read_table"]
 
-from ..diagnostics import ResolutionWarning
-from ..solvers.abel_fredholm import MAX_NODES, default_nodes, solve_fast
-from .work import loading_work
-
-__all__ = ["B_LOW", "TABLE_PATH", "CURVES", "panel_edges", "largest_resolved_radius", "build_table", "write_table",
-           "read_table", "lobatto_coefficients"]
-
-#: Smallest stick radius of the table (T*(B_LOW) rounds to 4/3).
-B_LOW = 1e-6
-#: Panel ratio of the geometric gradings toward b = 0 and b = 1.
-GRADING = 4.0
-#: Inner edges of the middle panels.
-MIDDLE = (0.45, 0.65)
 #: The shipped table.
 TABLE_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "monotonic_curves.json")
-#: Tabulated curves: name -> (absolute tolerance, relative tolerance) of the Chebyshev tail.
-CURVES = {
-    "torque": (5e-15, 0.0),
-    "torque_gap": (0.0, 5e-15),
-    "rigid_rotation": (5e-15, 2e-15),
-    "loading_work": (0.0, 5e-14),
-}
-_POINTS = (9, 17, 33, 65)
-_FORMAT = 1
-
-
-def largest_resolved_radius() -> float:
-    """Largest b whose default Nystrom resolution fits in MAX_NODES (about 1 - 1.6e-6)."""
-    lo, hi = 0.99, 1.0 - 1e-12
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if default_nodes(mid) <= MAX_NODES else (lo, mid)
-    return lo
-
-
-def panel_edges(b_max: float) -> np.ndarray:
-    """Increasing panel edges from B_LOW to b_max (see the module docstring)."""
-    low = [B_LOW]
-    while low[-1] * GRADING < 0.3:
-        low.append(low[-1] * GRADING)
-    slip = [1.0 - b_max]
-    while slip[-1] * GRADING < 0.15:
-        slip.append(slip[-1] * GRADING)
-    high = sorted(1.0 - d for d in slip)
-    return np.array([*low, *MIDDLE, *high])
-
-
-def lobatto_coefficients(values: np.ndarray) -> np.ndarray:
-    """Chebyshev coefficients of the interpolant through values at x_j = cos(pi j / (n - 1)), j = 0..n-1."""
-    values = np.asarray(values, dtype=float)
-    n = values.size - 1
-    j = np.arange(n + 1)
-    weights = np.ones(n + 1)
-    weights[[0, n]] = 0.5
-    coefficients = (2.0 / n) * (np.cos(np.pi * np.outer(j, j) / n) @ (weights * values))
-    coefficients[[0, n]] *= 0.5
-    return coefficients
-
-
-def _sample(b: float) -> tuple[float, float, float, float]:
-    with warnings.catch_warnings():  # the tail check near b_max; accuracy is measured against the table
-        warnings.simplefilter("ignore", ResolutionWarning)
-        solution = solve_fast(b)
-    return solution.torque, solution.torque_deficit, solution.rigid_rotation, loading_work(solution)
-
-
-def _converged(coefficients: np.ndarray, values: np.ndarray, tolerance: tuple[float, float]) -> bool:
-    bound = tolerance[0] + tolerance[1] * float(np.max(np.abs(values)))
-    return float(np.max(np.abs(coefficients[-3:]))) <= bound
-
-
-def _chop(coefficients: np.ndarray, values: np.ndarray, tolerance: tuple[float, float]) -> list[float]:
-    bound = tolerance[0] + tolerance[1] * float(np.max(np.abs(values)))
-    keep = np.nonzero(np.abs(coefficients) > bound)[0]
-    end = int(keep[-1]) + 1 if keep.size else 1
-    return [float(c) for c in coefficients[:end]]
-
-
-def _panel(lo: float, hi: float, cache: dict) -> dict:
-    """Coefficients of every curve on [lo, hi] (affine variable x in [-1, 1])."""
-    for n in _POINTS:
-        x = np.cos(np.pi * np.arange(n) / (n - 1))
-        radii = 0.5 * (hi - lo) * x + 0.5 * (hi + lo)
-        radii[0], radii[-1] = hi, lo
-        rows = np.array([cache.setdefault(float(b), _sample(float(b))) for b in radii])
-        fits = {name: lobatto_coefficients(rows[:, k]) for k, name in enumerate(CURVES)}
-        done = all(_converged(fits[name], rows[:, k], CURVES[name]) for k, name in enumerate(CURVES))
-        if done:
-            break
-    tails = {name: float(np.max(np.abs(fits[name][-3:]))) for name in CURVES}
-    panel = {"lo": lo, "hi": hi, "points": int(n), "tails": tails}
-    for k, name in enumerate(CURVES):
-        panel[name] = _chop(fits[name], rows[:, k], CURVES[name])
-    return panel
-
-
-def build_table(progress=None, cache: dict | None = None) -> dict:
-    """Solve on every panel and return the table (a JSON-ready dict); ``cache`` maps b to samples."""
-    start = time.perf_counter()
-    b_max = largest_resolved_radius()
-    edges = panel_edges(b_max)
-    cache = {} if cache is None else cache
-    panels = []
-    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
-        panels.append(_panel(float(lo), float(hi), cache))
-        if progress is not None:
-            progress(panels[-1])
-    return {
-        "format": _FORMAT,
-        "method": "fast (Abel-Fredholm, default nodes), W_mono by (W2)",
-        "domain": [B_LOW, b_max],
-        "solves": len(cache),
-        "seconds": round(time.perf_counter() - start, 1),
-        "panels": panels,
-    }
-
-
-def write_table(table: dict, path: str = TABLE_PATH) -> None:
-    """Write ``table`` with provenance metadata (atomic)."""
-    from ..provenance import atomic_path, provenance
-
-    record = {**table, "metadata": provenance(purpose="monotonic curves of the Abel-Fredholm method")}
-    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8") as handle:
-        json.dump(record, handle, allow_nan=False, separators=(",", ":"))  # compact: loaded on first use
-        handle.write("\n")
+#: Format number of the table file (``read_table`` refuses others).
+FORMAT = 1
 
 
 def read_table(path: str = TABLE_PATH) -> dict:
-    """The table as written by ``write_table`` (raises FileNotFoundError / ValueError if unusable)."""
+    """The table as written by ``_precompute.build_table.write_table``.
+
+    Raises FileNotFoundError or ValueError (another format) if it is unusable.
+    """
     with open(path, encoding="utf-8") as handle:
         table = json.load(handle)
-    if table.get("format") != _FORMAT:
-        raise ValueError(f"{path}: curve table format {table.get('format')!r}, expected {_FORMAT}")
+    if table.get("format") != FORMAT:
+        raise ValueError(f"{path}: curve table format {table.get('format')!r}, expected {FORMAT}")
     return table
-
-
-def _main() -> None:  # pragma: no cover - exercised by ``python -m torsional_contact.curves``
-    def report(panel):
-        print(f"[{panel['lo']:.6g}, {panel['hi']:.6g}] {panel['points']} points, tails "
-              + ", ".join(f"{k} {v:.1e}" for k, v in panel["tails"].items()), flush=True)
-
-    from .interpolant import add_by_torque
-
-    table = add_by_torque(build_table(report))
-    write_table(table)
-    print(f"{TABLE_PATH}: {table['solves']} solves, {table['seconds']} s; max tail "
-          f"{max(max(p['tails'].values()) for p in table['panels']):.1e}", flush=True)

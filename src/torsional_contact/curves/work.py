@@ -30,9 +30,9 @@ import numpy as np
 
 from ..quadrature import gauss_legendre
 from ..solvers import kernels
-from ..solvers.abel_fredholm import FastSolution
+from ..solvers.abel_fredholm import AbelFredholmSolution
 
-__all__ = ["loading_work"]
+__all__ = ["abel_fredholm_loading_work"]
 
 #: Gauss-Legendre nodes on psi in [0, min(pi/3, arccos b)] and per graded panel in t.
 _PSI_NODES = 64
@@ -59,7 +59,7 @@ def _rule(b: float):
     return np.concatenate(nodes), np.concatenate(weights)
 
 
-def loading_work(solution: FastSolution) -> float:
+def abel_fredholm_loading_work(solution: AbelFredholmSolution) -> float:
     """W_mono of (W2) for one Abel-Fredholm solution ((f p0)^2 a^3 / mu).
 
     0 at slip onset (b = 1); +inf at spinning (b = 0: unbounded slip).

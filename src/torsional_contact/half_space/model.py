@@ -157,7 +157,7 @@ _CACHE_SIZE = 4096
 class HalfSpaceMonotonic:
     """The monotonic solution mono(tau) of the half-space, as the memory rules use it.
 
-    The interface every model offers to ``histories`` (``models.monotonic_model`` picks it):
+    The interface every model offers to ``histories`` (``histories.monotonic.monotonic_model`` picks it):
     ``point(tau)`` -> (b, Omega_m, W_mono), ``points(tau)`` the same for arrays, ``solution(tau)``
     the full state (cached), and the attributes ``model``, ``method``, ``n_terms``.
     """

@@ -25,7 +25,7 @@ from .memory import (
     advance,
     history,
     initial_state,
-    monotonic,
+    monotonic_solution,
     turning_points,
 )
 from .signal import SignalHistory, analyse_signal, turning_point_indices
@@ -40,7 +40,7 @@ __all__ = [
     "advance",
     "history",
     "initial_state",
-    "monotonic",
+    "monotonic_solution",
     "turning_points",
     "turning_point_indices",
     "analyse_signal",

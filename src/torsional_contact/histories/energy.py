@@ -51,7 +51,7 @@ import numpy as np
 from scipy import special
 
 from .. import validation
-from ..backends import Series
+from ..backends import METHODS, Series
 from ..criteria import GROSS_SLIP_TORQUE
 from ..curves import monotonic_curves
 from ..quadrature import gauss_legendre_panels
@@ -103,7 +103,7 @@ def _radial_rule(states: Sequence[InterfaceState]):
     at every stick radius involved, where traction and slip have (r - b)^(1/2) and
     (r - b)^(3/2) end behaviour.
     """
-    if states[0].n_terms is not None and states[0].method != "fast":
+    if states[0].n_terms is not None and METHODS[states[0].method].truncated:  # a weak form (cylinder model)
         return gauss_legendre_panels(0.0, 1.0, 20.0 / bessel_j2_zeros(states[0].n_terms)[-1])
     radii = {s.source.point(tau)[0] for s in states for _, tau in s.terms}
     return gauss_legendre_panels(0.0, 1.0, 0.05, sorted(radii))

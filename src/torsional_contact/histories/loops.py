@@ -15,11 +15,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import validation
+from ..backends import METHODS
 from ..criteria import GROSS_SLIP_TORQUE
 from ..curves import monotonic_curves
 from ..curves.interpolant import ONSET_DELTA
 from ..diagnostics import ResolutionWarning
-from ..solution import solve
+from ..solution import solve_cylinder
 from ..solvers.weak_form import resolution_limit
 from .memory import (
     CYCLIC_SLIP_RANGE,
@@ -50,7 +51,7 @@ def _stick_radius_grid(b_start: float, b_end: float, n_points: int, b_max: float
 
 def _increments(b_a: float, b_b: float, n_points: int, method: str, n_terms) -> list[float]:
     """Monotonic torques tau at the interior stick radii of a slipping stretch (see ``sample_path``)."""
-    if method == "fast":
+    if not METHODS[method].truncated:
         curves = monotonic_curves()
         radii = _stick_radius_grid(b_a, b_b, n_points, 1.0 - ONSET_DELTA)  # annuli the solver resolves well
         return [float(t) for t in np.atleast_1d(curves.torque(radii))] if radii.size else []
@@ -58,7 +59,7 @@ def _increments(b_a: float, b_b: float, n_points: int, method: str, n_terms) -> 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)  # only resolved radii are requested
         for b in _stick_radius_grid(b_a, b_b, n_points, resolution_limit(n_terms)[1]):
-            out.append(register(solve(stick_radius=float(b), method=method, n_terms=n_terms)))
+            out.append(register(solve_cylinder(stick_radius=float(b), method=method, n_terms=n_terms)))
     return out
 
 
@@ -183,7 +184,7 @@ def tangent_compliance(state: InterfaceState, *, step: float = 1e-4) -> float:
         return 0.0
     if b <= 0.0:
         return math.inf
-    if state.method == "fast":
+    if not METHODS[state.method].truncated:
         curves = monotonic_curves()
         if b > curves.b_high:
             return math.pi**3 / 4.0 * (tau - 1.0) ** 2
@@ -192,8 +193,8 @@ def tangent_compliance(state: InterfaceState, *, step: float = 1e-4) -> float:
     h = min(step, b / 2, (1 - b) / 2)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
-        lo = solve(stick_radius=b - h, method=state.method, n_terms=state.n_terms)
-        hi = solve(stick_radius=b + h, method=state.method, n_terms=state.n_terms)
+        lo = solve_cylinder(stick_radius=b - h, method=state.method, n_terms=state.n_terms)
+        hi = solve_cylinder(stick_radius=b + h, method=state.method, n_terms=state.n_terms)
     return float((hi.rigid_rotation - lo.rigid_rotation) / (hi.torque - lo.torque))
 
 

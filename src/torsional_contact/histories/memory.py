@@ -90,7 +90,7 @@ Models.  The rules use only the uncoupling (rule 1), a stick radius b(tau) that 
 and a traction q_m(r; tau) that grows with tau: they hold as they stand for the half-space
 model (``half_space``: b < 1 for every tau > 0, so every reversal slips and nothing shakes
 down; the cylinders' range 2 is 0 there).  A state reaches the monotonic solutions only
-through the model's ``point`` / ``solution`` (``models.monotonic_model``: ``state.source``).
+through the model's ``point`` / ``solution`` (``histories.monotonic.monotonic_model``: ``state.source``).
 
 Energies, loops and dissipation: ``energy`` and ``loops``.
 """
@@ -107,9 +107,9 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
-from ..models import DEFAULT_MODEL, monotonic_model
+from ..models import DEFAULT_MODEL
 from ..solution import Solution
-from .monotonic import DEFAULT_METHOD, monotonic
+from .monotonic import DEFAULT_METHOD, monotonic_model, monotonic_solution
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -117,7 +117,7 @@ __all__ = [
     "TurningPoint",
     "InterfaceState",
     "initial_state",
-    "monotonic",
+    "monotonic_solution",
     "advance",
     "history",
     "turning_points",
@@ -301,7 +301,7 @@ def _branch(stack) -> tuple[float, float]:
 def _compose(stack, direction, tau, torque, energy, source) -> InterfaceState:
     """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau.
 
-    ``source``: the model's monotonic solution (``models.monotonic_model``)."""
+    ``source``: the model's monotonic solution (``histories.monotonic.monotonic_model``)."""
     b, omega, _ = source.point(tau)
     if stack:
         origin = stack[-1].state

@@ -8,11 +8,22 @@ numbers per tau: b(tau), omega_m(tau) and the work against friction of the monot
 loading W_mono(tau) = 2 pi int_b^1 s_m(r; tau) r dr (``curves.work``).  The profiles
 (traction, slip, stresses) need the full solution, built only when asked for.
 
-* ``fast`` (default): the numbers from the interpolants of ``curves`` (exact to ~1e-14,
-  microseconds), the solutions from ``solve(torque=tau)`` (a few ms, cached).
-* ``complete`` / ``published``: the truncated weak form at ``n_terms``; the numbers come from
+* ``fast`` (default), a method whose interface values are exact (``backends.Method.truncated``
+  false): the numbers from the interpolants of ``curves`` (exact to ~1e-14, microseconds), the
+  solutions from ``solve_cylinder(torque=tau)`` (a few ms, cached).
+* ``complete`` / ``published`` (truncated): the weak form at ``n_terms``; the numbers come from
   the solution itself and W_mono from the quadrature of its slip (panels of 20 / lam_N,
   where the series oscillates), all cached per tau.
+
+``monotonic_model`` returns the monotonic solution of a model (``models``) as the memory rules use
+it, the one place of ``histories`` that dispatches on the model (``MONOTONIC_MODELS``): an object
+with ``model``, ``method``, ``n_terms`` and
+
+    point(tau)    -> (b, omega_m, W_mono)      at one torque 0 <= tau <= 4/3,
+    points(tau)   -> arrays b, omega_m, W_mono  for an array of torques,
+    solution(tau) -> the monotonic ``Solution`` mono(tau) (cached),
+
+(``CylinderMonotonic`` here, ``half_space.HalfSpaceMonotonic``).
 """
 
 from __future__ import annotations
@@ -22,24 +33,28 @@ import math
 
 import numpy as np
 
-from .. import validation
+from .. import models, validation
+from ..backends import DEFAULT_METHOD, METHODS
 from ..criteria import GROSS_SLIP_TORQUE
 from ..curves import monotonic_curves
+from ..half_space import HalfSpaceMonotonic
 from ..quadrature import gauss_legendre_panels
-from ..solution import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Solution, solve
+from ..solution import Solution, solve_cylinder
 
-__all__ = ["DEFAULT_METHOD", "resolve", "monotonic", "register", "point", "points", "series_loading_work",
-           "CylinderMonotonic"]
+__all__ = ["DEFAULT_METHOD", "resolve", "monotonic_solution", "register", "point", "points", "series_loading_work",
+           "CylinderMonotonic", "MONOTONIC_MODELS", "monotonic_model"]
 
 _ONSET_ULPS = 8
 
 
 def resolve(method=None, n_terms=None) -> tuple[str, int | None]:
-    """(method, n_terms) with the defaults: ``fast`` (n_terms None) or a weak form (n_terms 145)."""
+    """(method, n_terms) with the defaults of ``backends.METHODS``: ``fast`` (n_terms None) or a weak form
+    (n_terms 145)."""
     method = validation.choice("method", DEFAULT_METHOD if method is None else method, METHODS)
-    if method == "fast":
-        return method, None if n_terms is None else validation.positive_int("n_terms", n_terms)
-    return method, validation.positive_int("n_terms", DEFAULT_N_TERMS if n_terms is None else n_terms)
+    default = METHODS[method].default_n_terms
+    if n_terms is None and default is None:
+        return method, None
+    return method, validation.positive_int("n_terms", default if n_terms is None else n_terms)
 
 
 def _snap(tau: float) -> float:
@@ -56,7 +71,7 @@ def _solution(tau: float, method: str, n_terms: int | None) -> Solution:
     if key not in _SOLUTIONS:
         if len(_SOLUTIONS) >= _CACHE_SIZE:
             _SOLUTIONS.clear()
-        _SOLUTIONS[key] = solve(torque=tau, method=method, n_terms=n_terms)
+        _SOLUTIONS[key] = solve_cylinder(torque=tau, method=method, n_terms=n_terms)
     return _SOLUTIONS[key]
 
 
@@ -74,7 +89,7 @@ def register(solution: Solution, tau: float | None = None) -> float:
     return tau
 
 
-def monotonic(tau, *, method=None, n_terms=None) -> Solution:
+def monotonic_solution(tau, *, method=None, n_terms=None) -> Solution:
     """mono(tau): the monotonic solution at torque 0 <= tau <= 4/3, friction limit 1 (cached)."""
     tau = validation.torque("tau", tau)
     if tau < 0:
@@ -103,7 +118,7 @@ def _series_point(tau: float, method: str, n_terms: int) -> tuple[float, float, 
 def point(tau: float, method: str, n_terms: int | None) -> tuple[float, float, float]:
     """(b, omega_m, W_mono) at 0 <= tau <= 4/3 for a resolved (method, n_terms)."""
     tau = _snap(tau)
-    if method == "fast":
+    if not METHODS[method].truncated:
         return monotonic_curves().state(tau)
     return _series_point(tau, method, n_terms)
 
@@ -112,7 +127,7 @@ def points(tau, method: str, n_terms: int | None) -> tuple[np.ndarray, np.ndarra
     """Vectorised ``point``: arrays b, omega_m, W_mono for an array of tau."""
     tau = np.asarray(tau, dtype=float)
     tau = np.where(np.abs(tau - 1.0) <= _ONSET_ULPS * np.finfo(float).eps, 1.0, np.minimum(tau, GROSS_SLIP_TORQUE))
-    if method == "fast":
+    if not METHODS[method].truncated:
         curves = monotonic_curves()
         return curves.stick_radius(tau), curves.rotation(tau), curves.work(tau)
     rows = np.array([_series_point(float(t), method, n_terms) for t in tau.ravel()]).reshape(*tau.shape, 3)
@@ -121,7 +136,7 @@ def points(tau, method: str, n_terms: int | None) -> tuple[np.ndarray, np.ndarra
 
 class CylinderMonotonic:
     """The cylinders' monotonic solution for one (method, n_terms), behind the interface of
-    ``models.monotonic_model``: ``point``, ``points``, ``solution`` (the functions above)."""
+    ``histories.monotonic.monotonic_model``: ``point``, ``points``, ``solution`` (the functions above)."""
 
     model = "cylinder"
 
@@ -138,4 +153,31 @@ class CylinderMonotonic:
         return points(tau, self.method, self.n_terms)
 
     def solution(self, tau) -> Solution:
-        return monotonic(tau, method=self.method, n_terms=self.n_terms)
+        return monotonic_solution(tau, method=self.method, n_terms=self.n_terms)
+
+
+#: model name -> the class of its monotonic solution, built from the resolved (method, n_terms) of the cylinder
+#: model (``None, None`` for the closed-form half-space).
+MONOTONIC_MODELS = {models.CYLINDER: CylinderMonotonic, models.HALF_SPACE: HalfSpaceMonotonic}
+
+
+def monotonic_model(model=None, method=None, n_terms=None):
+    """The monotonic solution of ``model`` for the memory rules (see the module docstring).
+
+    ``method`` and ``n_terms`` as for ``history`` (cylinder only); the objects are shared
+    (cached) per resolved (model, method, n_terms).
+
+    Raises
+    ------
+    ValueError
+        For an unknown model, a method or n_terms with the half-space model, or a bad
+        method / n_terms of the cylinder model.
+    """
+    model = models.validated(model, method, n_terms)
+    options = resolve(method, n_terms) if model == models.CYLINDER else ()
+    return _monotonic_model(model, *options)
+
+
+@functools.lru_cache(maxsize=64)
+def _monotonic_model(model: str, *options):
+    return MONOTONIC_MODELS[model](*options)

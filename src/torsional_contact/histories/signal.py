@@ -64,9 +64,10 @@ import numpy as np
 
 from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
-from ..models import DEFAULT_MODEL, monotonic_model
+from ..models import DEFAULT_MODEL
 from . import stack_walk
 from .gate import MAX_GATE, gated_signal
+from .monotonic import monotonic_model
 from .samples import turning_point_indices, validated_signal
 
 __all__ = [

@@ -10,6 +10,10 @@ the shell reports for a command that SIGPIPE killed).  Files named on the comman
 written by ``io.output`` (regular files atomically, symbolic links through, FIFOs and devices
 in place; never over an input).
 
+Optional packages: the subcommands ``reference`` and ``errata`` need the ``reference`` extra
+(mpmath, python-flint); without it they exit with status 2 and one line naming the pip
+command that installs it (``extras``).
+
 Numbers: every subcommand's parser (``_Parser``) takes negative numbers in any form,
 -1, -.5, -1e-1, -1E+3 (argparse alone reads "-1e-1" as an option), and the number
 options use ``real_argument`` as their type, so that "nan", "inf" and non-numbers are
@@ -30,10 +34,11 @@ import warnings
 
 import numpy as np
 
-from .. import __version__
+from .. import __version__, extras
+from ..backends import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS
+from ..dispatch import solve
 from ..models import DEFAULT_MODEL, MODELS
-from ..solution import DEFAULT_N_TERMS, METHODS, solve
-from ..solvers.weak_form import METHODS as SERIES_METHODS
+from ..solvers.weak_form import WEAK_FORMS
 from . import cli_units
 
 __all__ = ["main", "build_parser", "real_argument", "NEGATIVE_NUMBER", "MAX_REFERENCE_TERMS", "MAX_REFERENCE_DIGITS",
@@ -124,7 +129,7 @@ def _cmd_history(args):
     """``history``: states at the given turning points, or the analysis of a sampled signal (``--signal``)."""
     from .. import validation
     from ..histories import history
-    from .history_signal import analyse_file
+    from .history_command import analyse_file
 
     specimen = cli_units.specimen_from(args)
     if specimen is not None:
@@ -175,10 +180,6 @@ def _decimal_radius(name: str, text: str) -> str:
     return text.strip()
 
 
-#: The methods of ``reference``: the weak forms (truncated) and "fast", the converged solution.
-REFERENCE_METHODS = (*SERIES_METHODS, "fast")
-
-
 def _cmd_reference_fast(args) -> dict:
     """``reference --method fast``: the converged solution (Abel-Fredholm method in arbitrary precision)."""
     from ..verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm
@@ -200,15 +201,14 @@ def _cmd_reference_fast(args) -> dict:
     return record
 
 
-def _cmd_reference(args) -> dict:
+def _cmd_reference_weak_form(args) -> dict:
+    """``reference --method published|complete``: the truncated weak form in arbitrary precision."""
     import mpmath
 
     from .. import validation
     from ..verification.reference import solve_reference
 
-    method = validation.choice("--method", args.method, REFERENCE_METHODS)
-    if method == "fast":
-        return _cmd_reference_fast(args)
+    method = args.method
     if args.radii is not None:
         raise UsageError("--radii is only available with --method fast")
     text = _decimal_radius("--stick-radius", args.stick_radius)
@@ -235,7 +235,20 @@ def _cmd_reference(args) -> dict:
     }
 
 
+#: The methods of ``reference`` (arbitrary precision): the weak forms (truncated) and "fast", the converged
+#: solution of the Abel-Fredholm method; name -> handler.
+REFERENCE_METHODS = {**dict.fromkeys(WEAK_FORMS, _cmd_reference_weak_form), "fast": _cmd_reference_fast}
+
+
+def _cmd_reference(args) -> dict:
+    extras.require("reference", "the reference subcommand")
+    from .. import validation
+
+    return REFERENCE_METHODS[validation.choice("--method", args.method, REFERENCE_METHODS)](args)
+
+
 def _cmd_errata(args) -> list:
+    extras.require("reference", "the errata subcommand")
     from ..verification.errata import errata_table
 
     return errata_table()
@@ -248,7 +261,8 @@ NULL_EPILOG = ("JSON has no infinity: a number that is not finite prints as null
 
 def _add_solver_options(p) -> None:
     """--method, --n-terms, --radii, --model: shared by the subcommands that call ``solve``."""
-    p.add_argument("--method", default=None, help=f"one of {', '.join(METHODS)} (default: fast, the most accurate)")
+    p.add_argument("--method", default=None,
+                   help=f"one of {', '.join(METHODS)} (default: {DEFAULT_METHOD}, the most accurate)")
     p.add_argument("--n-terms", type=int, default=None,
                    help=f"published and complete weak forms: number of eigenfunctions (default {DEFAULT_N_TERMS}); "
                    "not used by the default method (fast: the interface values need no truncation)")
@@ -395,8 +409,14 @@ def main(argv=None) -> int:
                 _quiet_standard_output()
                 return 141
             return _error(exc if exc.filename is not None else (exc.strerror or exc))
-        except (UsageError, ValueError) as exc:
+        except (UsageError, ValueError, extras.MissingExtraError) as exc:
             return _error(exc)
+        except ModuleNotFoundError as exc:  # an optional package a subcommand needs: name the extra
+            extra = extras.extra_for(exc.name or "")
+            if extra is None:
+                raise
+            return _error(f"{args.command} needs the optional package {exc.name}, not installed: "
+                          f"{extras.install_hint(extra)}")
         try:
             _print_result(args, result)
         except OSError as exc:

@@ -10,7 +10,7 @@ nothing changes: every number is normalised.
 
 ``history --signal FILE`` with the specimen options reads a lab CSV (``io.lab_files``:
 ``time [s],torque [N m]``, time optional) and runs the same analysis as without them
-(``io.history_signal.analyse_file`` on the T* samples), then converts the result: every closed
+(``io.history_command.analyse_file`` on the T* samples), then converts the result: every closed
 cycle gains its ``energy`` (J), ``dissipated_energy`` is in J.
 
 ``fit --loop FILE --radius R --normal-force F`` reads ``torque [N m],twist [rad]`` and prints
@@ -137,7 +137,7 @@ def history_si(args, specimen):
         if value is not None:
             raise ValueError(f"{option} is not available with the specimen options (the tables are normalised; "
                              "the lab file names its columns by their units); leave out the specimen options for it")
-    from .history_signal import analyse_values
+    from .history_command import analyse_values
     from .lab_files import read_lab_columns
 
     label = f"--signal {args.signal}"

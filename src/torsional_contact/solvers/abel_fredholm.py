@@ -95,7 +95,7 @@ from . import interface, kernels
 from .interface import chebyshev_coefficients as _chebyshev_coefficients
 from .interface import log_gap
 
-__all__ = ["FastSolution", "solve_fast", "default_nodes", "log_gap", "MAX_NODES", "MIN_STICK_RADIUS"]
+__all__ = ["AbelFredholmSolution", "solve_abel_fredholm", "default_nodes", "log_gap", "MAX_NODES", "MIN_STICK_RADIUS"]
 
 #: Cap on the Nystrom nodes; default_nodes exceeds it for b within ~8e-7 of 1 (warns).
 MAX_NODES = 512
@@ -153,7 +153,7 @@ def _gauss_theta(n: int):
 
 
 @dataclass(frozen=True)
-class FastSolution:
+class AbelFredholmSolution:
     """Partial-slip solution for one stick radius 0 < b < 1 (positive torque).
 
     Attributes
@@ -396,11 +396,11 @@ class FastSolution:
         return -moments / (lam * integrals.dini_norm(lam))
 
 
-def _limit_solution(b: float) -> FastSolution:
+def _limit_solution(b: float) -> AbelFredholmSolution:
     """b = 1 (slip onset: T* = 1, omega = 0) or b = 0 (spinning: T* = 4/3, omega = +inf)."""
     onset = b == 1.0
     rotation = 0.0 if onset else math.inf
-    return FastSolution.without_nodes(
+    return AbelFredholmSolution.without_nodes(
         stick_radius=b,
         torque=1.0 if onset else GROSS_SLIP_TORQUE,
         rigid_rotation=rotation,
@@ -410,7 +410,7 @@ def _limit_solution(b: float) -> FastSolution:
     )
 
 
-def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
+def solve_abel_fredholm(stick_radius: float, n_nodes: int | None = None) -> AbelFredholmSolution:
     """Solve the partial-slip problem for a stick radius by the Abel-Fredholm method.
 
     Parameters
@@ -424,7 +424,7 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
 
     Returns
     -------
-    FastSolution
+    AbelFredholmSolution
 
     Warns
     -----
@@ -504,7 +504,7 @@ def solve_fast(stick_radius: float, n_nodes: int | None = None) -> FastSolution:
             ResolutionWarning,
             stacklevel=2,
         )
-    return FastSolution(
+    return AbelFredholmSolution(
         stick_radius=b,
         torque=float(torque),
         rigid_rotation=float(rotation),

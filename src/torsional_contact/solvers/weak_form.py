@@ -111,7 +111,7 @@ from ..special.zeros import bessel_j2_zeros
 from .equilibration import equilibrated_solve
 
 __all__ = [
-    "METHODS",
+    "WEAK_FORMS",
     "MAX_SERIES_TERMS",
     "SeriesSolution",
     "solve_series",
@@ -123,7 +123,8 @@ __all__ = [
     "closure_torque",
 ]
 
-METHODS = ("published", "complete")
+#: The weak forms (``solve_series``): eq. (38) as printed, and with the missing rigid-rotation mode.
+WEAK_FORMS = ("published", "complete")
 
 #: How T* is fixed for a given b (see the module docstring): (v), (vi) or (vii).
 CLOSURES = ("traction", "displacement", "torque")

@@ -121,7 +121,7 @@ class AbelFredholmReference:
 
     def _profile(self, kind: str, radii, state) -> list:
         exact = self._radii(radii, state)
-        values = state.traction_arb(exact) if kind == "traction" else state.slip_arb(exact)
+        values = state.interface_traction(exact) if kind == "traction" else state.interface_slip(exact)
         with working_digits(state.work_digits):
             return [arb_to_mp(v) for v in values]
 
@@ -241,12 +241,12 @@ def face_shear_arb(state, radii) -> list:
         sigma_rt(r, 0) = (2/(pi r^2)) int_b^r t^2 E(t) / sqrt(r^2 - t^2) dt,   E = dD/dt - D/t,
 
     i.e. the slip integral of (F7) with D replaced by t E(t), divided by 2 r (the state's own
-    quadrature, ``AbelFredholmState.slip_arb``).  0 on the stick disc and at r = 1 (eq. 9).
+    quadrature, ``AbelFredholmState.interface_slip``).  0 on the stick disc and at r = 1 (eq. 9).
     """
     proxy = _ShearProxy(state)
     with working_digits(state.work_digits):
         inside = [r if r < 1 else flint.arb(0) for r in radii]
-        halves = type(state).slip_arb(proxy, inside)
+        halves = type(state).interface_slip(proxy, inside)
         return [+(v / (2 * r)) if r < 1 and v != 0 else flint.arb(0) for v, r in zip(halves, radii, strict=True)]
 
 

@@ -22,6 +22,7 @@ import math
 import mpmath
 
 from .. import validation
+from ..extras import install_hint
 
 try:  # optional: Arb ball arithmetic (Bessel functions, dense linear algebra)
     import flint
@@ -56,7 +57,7 @@ FLINT = flint is not None
 def require_flint(what: str) -> None:
     """Raise ImportError naming ``what`` if python-flint is not installed."""
     if not FLINT:
-        raise ImportError(f"{what} needs python-flint (pip install python-flint); it is not installed")
+        raise ImportError(f"{what} needs python-flint, not installed: {install_hint('reference')}")
 
 
 def backend() -> str:

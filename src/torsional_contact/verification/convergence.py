@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..solution import solve
+from ..solution import solve_cylinder
 
 __all__ = ["n_terms_study", "format_table"]
 
@@ -38,7 +38,7 @@ def n_terms_study(stick_radius=0.6, n_terms=(145, 290, 580, 1160, 2320), radii=(
     radii = np.asarray(radii, dtype=float)
     torque, omega, traction = [], [], []
     for n in n_terms:
-        s = solve(stick_radius=stick_radius, method=method, n_terms=int(n))
+        s = solve_cylinder(stick_radius=stick_radius, method=method, n_terms=int(n))
         torque.append(s.torque)
         omega.append(s.rigid_rotation)
         traction.append(s.traction(radii))

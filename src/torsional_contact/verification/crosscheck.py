@@ -13,7 +13,7 @@ import numpy as np
 
 from ..diagnostics import AccuracyWarning, UnphysicalResultWarning
 from ..solvers.equilibration import equilibrate, reciprocal_condition
-from ..solvers.weak_form import METHODS, solve_series
+from ..solvers.weak_form import WEAK_FORMS, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
@@ -83,7 +83,7 @@ def rounding_error(reference: ReferenceSolution) -> dict:
     }
 
 
-def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=METHODS, progress: bool = False) -> list:
+def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORMS, progress: bool = False) -> list:
     """1-norm condition numbers of the double-precision system vs N (raw and equilibrated).
 
     kappa_1 = ||A||_1 ||A^-1||_1 estimated by LAPACK dgecon from the LU factors

@@ -288,7 +288,7 @@ class AbelFredholmState:
             d[0] = d[0] / 2
             return tuple(v.mid() for v in d[: n - 1])
 
-    def traction_arb(self, radii) -> list:
+    def interface_traction(self, radii) -> list:
         """sigma_zt(r, 0)/(f p0) at exact radii in [0, 1] (arb list), eq. (F6); 1 for r >= b."""
         derivative = self._chebyshev_derivative
         with working_digits(self.work_digits):
@@ -354,7 +354,7 @@ class AbelFredholmState:
         omega2 = 2 * self.rotation_constant
         return [t * (omega2 - _arcsech(t) - h) for t, h in zip(t_points, series, strict=True)]
 
-    def slip_arb(self, radii) -> list:
+    def interface_slip(self, radii) -> list:
         """Slip s(r) = 2 u_theta(r, 0+) in f p0 a / mu at exact radii in [0, 1], eq. (F7)."""
         with working_digits(self.work_digits):
             b = self.stick_radius

@@ -8,7 +8,7 @@ Everything here is computed with mpmath at a chosen number of significant digits
 or works in the caller's ``mpmath.workdps`` context, and never leaves ``mp.dps``
 changed.  The functions mirror the mathematical objects of the paper one by one:
 
-* ``j2_zeros``                       lam_n, J2(lam_n) = 0 (eq. 19-20), Newton-refined
+* ``bessel_j2_zeros``                lam_n, J2(lam_n) = 0 (eq. 19-20), Newton-refined
   from the double-precision zeros of ``zeros.bessel_j2_zeros``;
 * ``dini_norm``                      h (eq. 35, a = 1), printed form;
 * ``integral_t_j1_hyp1f2``           x^3/6 1F2(3/2; 2, 5/2; -x^2/4), the form printed in
@@ -51,10 +51,10 @@ from .. import validation
 from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
 from ..provenance import write_json
-from ..solvers.weak_form import METHODS, resolution_limit, terms_to_resolve
+from ..solvers.weak_form import WEAK_FORMS, resolution_limit, terms_to_resolve
 from .arbitrary_precision import backend as default_backend
 from .arbitrary_precision import parse_decimal, solve_linear
-from .weak_form_mp import assemble, j2_zeros
+from .weak_form_mp import assemble, bessel_j2_zeros
 
 __all__ = [
     "DEFAULT_DIGITS",
@@ -196,7 +196,7 @@ def solve_reference(
     IllConditioningWarning
         If the rigorous bound of the flint solve leaves fewer than ``digits`` digits.
     """
-    method = validation.choice("method", method, METHODS)
+    method = validation.choice("method", method, WEAK_FORMS)
     n_terms = validation.positive_int("n_terms", n_terms)
     digits = validation.positive_int("digits", digits)
     b_in = stick_radius
@@ -216,7 +216,7 @@ def solve_reference(
                 stacklevel=2,
             )
         t0 = time.perf_counter()
-        lam = j2_zeros(n_terms, work)
+        lam = bessel_j2_zeros(n_terms, work)
         seconds["zeros"] = time.perf_counter() - t0
         t0 = time.perf_counter()
         matrix, rhs_torque, rhs_constant = assemble(method, lam, b, form=form, progress=progress)
@@ -259,7 +259,7 @@ def solve_reference(
         )
 
 
-def reference_set(stick_radii, methods=METHODS, n_terms=145, digits=DEFAULT_DIGITS, progress=True, **kwargs):
+def reference_set(stick_radii, methods=WEAK_FORMS, n_terms=145, digits=DEFAULT_DIGITS, progress=True, **kwargs):
     """``solve_reference`` for every (method, b); returns (list of solutions, total seconds)."""
     jobs = [(m, b) for m in methods for b in stick_radii]
     if progress:

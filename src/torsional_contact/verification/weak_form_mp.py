@@ -11,12 +11,12 @@ from __future__ import annotations
 import mpmath
 
 from .. import validation
-from ..solvers.weak_form import METHODS
-from ..special.zeros import bessel_j2_zeros
+from ..solvers.weak_form import WEAK_FORMS
+from ..special import zeros
 
 __all__ = [
-    "j2_zeros",
-    "j2_zeros_at",
+    "bessel_j2_zeros",
+    "bessel_j2_zeros_at",
     "dini_norm",
     "integral_t_j1_hyp1f2",
     "integral_t_j1_struve",
@@ -36,7 +36,7 @@ __all__ = [
 _ZERO_CACHE: dict[tuple[int, int], tuple] = {}
 
 
-def j2_zeros(n_terms: int, digits: int | None = None):
+def bessel_j2_zeros(n_terms: int, digits: int | None = None):
     """First ``n_terms`` positive zeros of J2 (eq. 20) to ``digits`` significant digits.
 
     Newton's method on J2 with J2'(x) = J1(x) - 2 J2(x)/x, started from the
@@ -60,15 +60,15 @@ def j2_zeros(n_terms: int, digits: int | None = None):
     dps = mpmath.mp.dps if digits is None else validation.positive_int("digits", digits)
     key = (n_terms, dps)
     if key not in _ZERO_CACHE:
-        _ZERO_CACHE[key] = _newton_j2(bessel_j2_zeros(n_terms), dps)
+        _ZERO_CACHE[key] = _newton_j2(zeros.bessel_j2_zeros(n_terms), dps)
     return _ZERO_CACHE[key]
 
 
-def j2_zeros_at(indices, digits: int | None = None):
+def bessel_j2_zeros_at(indices, digits: int | None = None):
     """The zeros lam_n (eq. 20) for the given 1-based ``indices`` only, to ``digits`` digits."""
     indices = [validation.positive_int("index", i) for i in indices]
     dps = mpmath.mp.dps if digits is None else validation.positive_int("digits", digits)
-    start = bessel_j2_zeros(max(indices))
+    start = zeros.bessel_j2_zeros(max(indices))
     return _newton_j2([start[i - 1] for i in indices], dps)
 
 
@@ -232,7 +232,7 @@ def assemble(method: str, lam, b, form: str = "hyp1f2", progress: bool = False):
     -------
     (mpmath.matrix, list of mpf, list of mpf)
     """
-    method = validation.choice("method", method, METHODS)
+    method = validation.choice("method", method, WEAK_FORMS)
     n = len(lam)
     lommel = lommel_matrix(lam, b, progress=progress)
     size = n if method == "published" else n + 1

@@ -15,7 +15,7 @@ from ...special import integrals
 from ...special.zeros import bessel_j2_zeros
 from ...typeset import fixed, sci
 from .. import weak_form_mp as mp_forms
-from ..quadrature import GL_POINTS, Nodes
+from ..quadrature_mp import GL_POINTS, Nodes
 from .rules import formula_rule, threshold
 from .settings import HAZARD_DIGITS_KEPT, N_DINI, N_PAPER, WORK_DPS
 from .verdicts import entry, relative_difference, verdict_formula
@@ -34,7 +34,7 @@ _GRID = {
 def _grid_lambdas(digits):
     """{index: lam_index} for the indices of ``_GRID`` (Newton-refined one by one)."""
     indices = sorted({i for pairs in _GRID.values() for p in pairs for i in p})
-    return dict(zip(indices, mp_forms.j2_zeros_at(indices, digits), strict=True))
+    return dict(zip(indices, mp_forms.bessel_j2_zeros_at(indices, digits), strict=True))
 
 
 def check_appendix_b():
@@ -122,7 +122,7 @@ def check_appendix_b():
 def check_dini_norm():
     """Eq. (34) orthogonality and eq. (35) h on [0, 1]."""
     with mpmath.workdps(WORK_DPS):
-        lam = mp_forms.j2_zeros(N_DINI, WORK_DPS)
+        lam = mp_forms.bessel_j2_zeros(N_DINI, WORK_DPS)
         extra = mpmath.mpf("7.3")  # (35) holds for any lambda, not only zeros of J2
         chosen = [lam[0], lam[1], lam[144], lam[-1], extra]
         nodes = Nodes(0, 1, 2 * lam[-1])

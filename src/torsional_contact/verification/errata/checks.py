@@ -16,7 +16,7 @@ from .quoted import check_decay, check_fig5, check_zeros
 from .series_terms import check_series_terms
 from .solution_e import check_potential, check_separation, check_side_condition
 from .statements import check_completeness, check_limits, check_torque_evaluation, check_truncation
-from .weak_form import check_weak_form_passage, check_weighting
+from .weak_form_passage import check_weak_form_passage, check_weighting
 
 __all__ = ["errata_table", "errata_timing", "summary"]
 

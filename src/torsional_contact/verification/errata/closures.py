@@ -60,7 +60,7 @@ def _system(b, method, n, weight=1.0):
     lam = bessel_j2_zeros(n)
     if weight == 1.0:
         matrix, rhs_t, rhs_c = assemble(method, lam, b)
-    else:  # the weighting of errata.weak_form.weighted_torque
+    else:  # the weighting of errata.weak_form_passage.weighted_torque
         matrix = integrals.lommel_matrix(lam, b) * (lam - weight)[None, :]
         matrix[np.diag_indices_from(matrix)] += weight * integrals.dini_norm(lam)
         rhs_t = integrals.load_integral_linear(lam, b)

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import functools
 
-from ...solution import solve
-from ...solvers.abel_fredholm import solve_fast
+from ...solution import solve_cylinder
+from ...solvers.abel_fredholm import solve_abel_fredholm
 
 __all__ = ["exact", "exact_amplitudes"]
 
@@ -20,12 +20,12 @@ __all__ = ["exact", "exact_amplitudes"]
 @functools.lru_cache(maxsize=32)
 def exact(stick_radius: float):
     """The Abel-Fredholm ``Solution`` for b = ``stick_radius`` (default method of ``solve``)."""
-    return solve(stick_radius=stick_radius)
+    return solve_cylinder(stick_radius=stick_radius)
 
 
 @functools.lru_cache(maxsize=16)
 def exact_amplitudes(stick_radius: float, n_terms: int):
     """Dini amplitudes c_1..c_n of the Abel-Fredholm solution (read-only array)."""
-    amplitudes = solve_fast(stick_radius).dini_amplitudes(n_terms)
+    amplitudes = solve_abel_fredholm(stick_radius).dini_amplitudes(n_terms)
     amplitudes.setflags(write=False)
     return amplitudes

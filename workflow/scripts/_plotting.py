@@ -12,9 +12,10 @@ import os
 
 import matplotlib.pyplot as plt
 
-from ..provenance import atomic_path
+from torsional_contact.backends import METHODS
+from torsional_contact.provenance import atomic_path
 
-__all__ = ["use_style", "save_figure", "figure_parser", "load_data", "method_label", "plt"]
+__all__ = ["use_style", "save_figure", "figure_parser", "method_options", "load_data", "method_label", "plt"]
 
 
 def use_style(style_path=None) -> None:
@@ -42,18 +43,28 @@ def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
 
 def figure_parser(doc: str, data: bool = False, quantities=None) -> argparse.ArgumentParser:
     """Command line of a figure script: --style, --pdf, --png; --data for scripts that plot a JSON;
-    for scripts that solve themselves, --quantity (one of ``quantities``), --method and --n-terms."""
+    for scripts that solve themselves, --quantity (one of ``quantities``), --method and --n-terms.
+
+    Every option is required: the rule sets each value from the configuration."""
     parser = argparse.ArgumentParser(description=doc.strip().splitlines()[0])
     if data:
         parser.add_argument("--data", required=True, help="JSON written by the workflow")
     if quantities is not None:
         parser.add_argument("--quantity", choices=sorted(quantities), required=True)
-        parser.add_argument("--method", default=None, help="solve()'s method (default: the most accurate)")
-        parser.add_argument("--n-terms", type=int, default=None, help="N of a weak form")
-    parser.add_argument("--style", help="matplotlib style file")
+        parser.add_argument("--method", required=True, help="solve()'s method")
+        parser.add_argument("--n-terms", type=int, required=True,
+                            help="N of a weak form (ignored by a method whose interface values are exact)")
+    parser.add_argument("--style", required=True, help="matplotlib style file")
     parser.add_argument("--pdf", required=True)
-    parser.add_argument("--png")
+    parser.add_argument("--png", required=True)
     return parser
+
+
+def method_options(args) -> dict:
+    """``method`` and ``n_terms`` for ``solve`` from a figure's --method and --n-terms: N only for a
+    truncated method (a weak form); the others choose their Dini terms per call (``n_terms=None``)."""
+    truncated = METHODS[args.method].truncated
+    return {"method": args.method, "n_terms": args.n_terms if truncated else None}
 
 
 def load_data(path) -> dict:
@@ -69,4 +80,5 @@ METHOD_LABELS = {"fast": "Abel-Fredholm", "complete": "complete weak form", "pub
 def method_label(solution) -> str:
     """The method of a ``Solution`` as figures name it, with N for the weak forms."""
     name = METHOD_LABELS.get(solution.method, solution.method)
-    return name if solution.method == "fast" or solution.n_terms is None else f"{name}, N = {solution.n_terms}"
+    truncated = METHODS[solution.method].truncated
+    return f"{name}, N = {solution.n_terms}" if truncated and solution.n_terms is not None else name

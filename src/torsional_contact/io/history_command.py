@@ -14,12 +14,14 @@ also gets ``states`` (one per turning point).  The states of any signal go to a 
 file with ``--states``, the twist and energy at every sample with ``--output``: ``.npz``
 (recommended for long signals: binary, exact, with the provenance), ``.npy`` (a structured
 array) or CSV (any other name) (``io.signal_files.write_table``).
-A progress bar on standard error accompanies signals of ``PROGRESS_SAMPLES`` samples or more.
+A progress bar on standard error accompanies signals of ``PROGRESS_SAMPLES`` samples or more
+(when tqdm, the ``progress`` extra, is installed).
 """
 
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import sys
 
 import numpy as np
@@ -44,8 +46,9 @@ UNITS = {"torque": "T* = 2T/(f F a)", "gated_torque": "T*", "stick_radius": "a",
 
 @contextlib.contextmanager
 def _progress(enabled: bool, total: int):
-    """A callable (stage, samples) advancing a tqdm bar on stderr, or a no-op."""
-    if not enabled:
+    """A callable (stage, samples) advancing a tqdm bar on stderr, or a no-op (disabled, or tqdm, the
+    ``progress`` extra, not installed: the analysis is the same without a bar)."""
+    if not enabled or importlib.util.find_spec("tqdm") is None:
         yield lambda stage, count=0: None
         return
     from tqdm import tqdm

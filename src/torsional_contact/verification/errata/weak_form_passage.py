@@ -14,7 +14,7 @@ from ...special import integrals
 from ...special.zeros import bessel_j2_zeros
 from ...typeset import fixed, sci
 from .. import weak_form_mp as mp_forms
-from ..quadrature import Nodes
+from ..quadrature_mp import Nodes
 from ..reference import solve_reference
 from .rules import CLOSURE_TAG, CLOSURE_TAG_LATEX, TRUTH, formula_rule, threshold
 from .settings import CONSISTENCY_FACTOR, N_CONVERGED, N_PAPER, NEGLIGIBLE_CHANGE, WORK_DPS
@@ -98,7 +98,7 @@ def check_weak_form_passage():
     n = 8
     digits = WORK_DPS
     with mpmath.workdps(digits):
-        lam = mp_forms.j2_zeros(n, digits)
+        lam = mp_forms.bessel_j2_zeros(n, digits)
         a2, b2 = mpmath.mpf(2), mpmath.mpf("1.2")
         m38, bl38, bc38 = _printed_system(lam, a2, b2, digits)
         m33, bl33, bc33 = _weak_form_by_quadrature(lam, a2, b2, digits)
