@@ -25,13 +25,13 @@ from scipy import special
 
 from ...solvers.equilibration import equilibrated_solve
 from ...solvers.weak_form import CLOSURES, assemble, closure_torque
-from ...special import integrals
 from ...special.zeros import bessel_j2_zeros
 from ...typeset import fixed
 from .rules import TRUTH, threshold
 from .settings import CONSISTENCY_FACTOR, N_CONVERGED, N_PAPER, RADII
 from .truth import exact
 from .verdicts import entry
+from .weak_form_passage import weighted_system
 
 __all__ = ["check_closures", "closure_survey", "CLOSURE_NAMES"]
 
@@ -60,21 +60,8 @@ def _system(b, method, n, weight=1.0):
     lam = bessel_j2_zeros(n)
     if weight == 1.0:
         matrix, rhs_t, rhs_c = assemble(method, lam, b)
-    else:  # the weighting of errata.weak_form_passage.weighted_torque
-        matrix = integrals.lommel_matrix(lam, b) * (lam - weight)[None, :]
-        matrix[np.diag_indices_from(matrix)] += weight * integrals.dini_norm(lam)
-        rhs_t = integrals.load_integral_linear(lam, b)
-        rhs_c = -integrals.load_integral_constant(lam, b)
-        if method == "complete":
-            stick = integrals.stick_moment(lam, b)
-            full = np.zeros((n + 1, n + 1))
-            full[:n, :n] = matrix
-            full[:n, n] = weight * stick
-            full[n, :n] = (weight - lam) * stick
-            full[n, n] = weight * b**4 / 4
-            matrix = full
-            rhs_t = np.append(rhs_t, (1 - b**4) / 4)
-            rhs_c = np.append(rhs_c, -(1 - b**3) / 3)
+    else:
+        matrix, rhs_t, rhs_c = weighted_system(b, method, lam, weight)
     x, _ = equilibrated_solve(matrix, np.column_stack([rhs_t, rhs_c]))
     return lam, x[:, 0], x[:, 1]
 

@@ -148,15 +148,14 @@ def check_weak_form_passage():
     ]
 
 
-def weighted_torque(stick_radius: float, method: str, n_terms: int, weight: float) -> float:
-    """T*(b) from the weak form with the stick (displacement) residual weighted by ``weight``.
+def weighted_system(stick_radius: float, method: str, lam: np.ndarray, weight: float):
+    """(matrix, rhs_torque, rhs_constant) of the weak form (37)-(38) with the stick residual weighted by ``weight``.
 
-    weight = 1 is eq. (37)-(38) (displacement in units f p0 a / mu); weight = kappa
-    corresponds to measuring displacements in f p0 L / mu with L = a / kappa, i.e. the
-    factor lam_n (lam_n - 1) becomes lam_n (lam_n - kappa).  Double precision.
+    The factor lam_n (lam_n - 1) of eq. (37) becomes lam_n (lam_n - kappa), kappa = ``weight`` (displacements
+    measured in f p0 L / mu, L = a / kappa); "complete" borders the system with the rigid-rotation mode.
+    ``lam``: the zeros of J2 (the Dini wavenumbers).  Double precision.
     """
     b, k = float(stick_radius), float(weight)
-    lam = bessel_j2_zeros(n_terms)
     matrix = integrals.lommel_matrix(lam, b) * (lam - k)[None, :]
     matrix[np.diag_indices_from(matrix)] += k * integrals.dini_norm(lam)
     rhs_t = integrals.load_integral_linear(lam, b)
@@ -172,6 +171,19 @@ def weighted_torque(stick_radius: float, method: str, n_terms: int, weight: floa
         matrix = full
         rhs_t = np.append(rhs_t, (1 - b**4) / 4)
         rhs_c = np.append(rhs_c, -(1 - b**3) / 3)
+    return matrix, rhs_t, rhs_c
+
+
+def weighted_torque(stick_radius: float, method: str, n_terms: int, weight: float) -> float:
+    """T*(b) from the weak form with the stick (displacement) residual weighted by ``weight``.
+
+    weight = 1 is eq. (37)-(38) (displacement in units f p0 a / mu); weight = kappa
+    corresponds to measuring displacements in f p0 L / mu with L = a / kappa, i.e. the
+    factor lam_n (lam_n - 1) becomes lam_n (lam_n - kappa) (``weighted_system``).  Double precision.
+    """
+    b = float(stick_radius)
+    lam = bessel_j2_zeros(n_terms)
+    matrix, rhs_t, rhs_c = weighted_system(b, method, lam, weight)
     x = linalg.solve(matrix, np.column_stack([rhs_t, rhs_c]))
     w = lam * special.j1(lam * b)
     n = lam.size
