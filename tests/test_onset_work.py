@@ -95,7 +95,7 @@ def test_coefficient_against_the_30_digit_reference():
         nodes, weights = gauss_legendre(60)  # analytic integrand on [0, psi_b]: far beyond 20 digits
         psi = [psi_b * (x + 1) / 2 for x in nodes]
         t = [p.cos() for p in psi]
-        d = state._d_function(t)  # noqa: SLF001 - D(t) of (F7) in arbitrary precision
+        d = state._d_function(t, psi)  # noqa: SLF001 - D(t) of (F7) in arbitrary precision
         total = sum((w * tj * dj * p.sin().atanh() * p.sin() for w, p, tj, dj in zip(weights, psi, t, d, strict=True)),
                     flint.arb(0))
         work = 8 * total * psi_b / 2
