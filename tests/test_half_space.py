@@ -733,8 +733,9 @@ def test_direct_numerical_solution_of_the_slip_condition(b):
     omega = 0.5 * np.arccos(b) * np.sum(w * g)
     torque = 32 / (3 * np.pi) * 0.5 * np.arccos(b) * np.sum(w * cc**3 * g)
     # the forward error of the collocation solve: its matrix entries are 160-term Gauss sums of terms |T_k| / c
-    # <= 1/b (relative rounding 160 EPS of the row sums of |entries|), and LU adds n EPS (no growth with partial
-    # pivoting here), so the coefficients' error is cond_2(matrix) (160 + n) EPS of their norm; g sums n of them
+    # <= 1/b (relative rounding 160 EPS of the row sums of |entries|), and LU adds n EPS times partial pivoting's
+    # growth factor (O(1) for this smooth, well-scaled matrix; not computed), so the coefficients' error is
+    # cond_2(matrix) (160 + n) EPS of their norm; g sums n of them
     # (<= sum |a_k| / min |g|, min |g| = 1/2).  The truncation (Bernstein rho >= 1.9 at b = 0.1: rho^-64 < 1e-17)
     # and the 160-point Gauss rules of the analytic integrands are far below.
     coefficient_error = np.linalg.cond(matrix) * (160 + n) * EPS
