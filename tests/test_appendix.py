@@ -19,6 +19,7 @@ import mpmath
 import numpy as np
 import pytest
 from scipy import integrate, special
+from tolerances import EPS, assert_beyond, assert_close, assert_within
 
 from torsional_contact.solvers import kernels
 from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
@@ -51,12 +52,18 @@ def test_beta_from_the_dini_series():
     lam = bessel_j2_zeros(10_000)
     terms = (integrals.integral_t_j1(lam) / lam**2) ** 2 / (lam * special.j1(lam) ** 2 / 2)
     dini = float(np.sum(terms[::-1]))  # smallest first
-    # the terms decay like n^-4: the tail beyond N is about N terms_N / 3
+    # the terms decay like n^-4: the tail beyond N is N terms_N / 3 (the integral of C n^-4) up to terms_N / 2
+    # (Euler-Maclaurin) and O(tail / N); it is added, so that the comparison is not at the size of the tail
+    # (2.4e-14, where a tenfold margin over the truncation would have left no room)
     tail = terms[-1] * lam.size / 3
-    beta = 9 / 4 * (double_moment - dini)
-    # tolerance: 10 x the truncation bound of the series (9/4 tail), above the ~1e-16 rounding of the sum
-    assert abs(beta - kernels.TORQUE_ROTATION) < max(10 * 9 / 4 * tail, 1e-15)
-    assert abs(beta - 0.60531512622) < 1e-11  # the value the manuscript prints
+    beta = 9 / 4 * (double_moment - dini - tail)
+    # the rest: the tail's error (<= terms_N, with the O(tail / N) term), the recursive-summation bound of the N
+    # positive terms (N EPS dini), the 30-digit double moment rounded to double (half an ulp), and the difference
+    # and product (2 EPS beta)
+    bound = 9 / 4 * (terms[-1] + lam.size * EPS * dini + EPS * double_moment) + 2 * EPS * beta
+    assert_close(beta, kernels.TORQUE_ROTATION, "tail correction + rounding of the sums", atol=bound)
+    # the value the manuscript prints: correct to its 11 decimals, half a unit of the last one
+    assert_within(abs(kernels.TORQUE_ROTATION - 0.60531512622), 5e-12, "11 printed decimals", exact=True)
 
 
 @pytest.mark.parametrize("load", ["uniform", "quadratic"])
@@ -83,8 +90,14 @@ def test_halfspace_part_is_the_abel_operator(load, r):
             rho = 0.5 * (s1 - s0) * x + 0.5 * (s1 + s0)
             total += abs(0.5 * (s1 - s0)) * np.sum(w * kernels.halfspace_kernel(r, rho) * rho
                                                    * np.vectorize(q)(rho))
-    # tolerance: the graded rule converges to ~1e-15 (the log singularity is resolved to 2^-40)
-    assert abs(total - float(operator)) < 1e-12
+    # the graded rule: the innermost panel of each side (width 2^-40 of the side, next to the log singularity)
+    # holds at most width (|ln width| + 1) max(G_hs rho q) of the integral, and Gauss's error there is a fraction
+    # of that; the other panels are analytic (geometric convergence); plus the rounding of 3200 positive terms
+    # (3200 EPS of the total) and of the 20-digit reference (half an ulp)
+    width = 2.0**-40
+    singular = 2 * width * (abs(math.log(width)) + 1) * 4 / math.pi
+    assert_close(total, float(operator), "innermost panels + rounding of the graded rule",
+                 atol=singular + 3200 * EPS * abs(total) + EPS)
 
 
 def _traction_from_abel(g_at_b, b, e):
@@ -121,41 +134,70 @@ def test_regularity_in_both_directions(g_at_b):
                 for wk, ek in zip(w, e, strict=True))
     forward = stick + math.acosh(1 / t) - math.acosh(b / t)  # + int_b^1 dp / sqrt(p^2 - t^2)
     expected = math.acosh(1 / b) + g_at_b + 0.2 * (t * t - b * b)
-    # tolerance: the quadratures are good to ~1e-12; 1e-9 leaves room for the cancellation near p = b
-    assert forward == pytest.approx(expected, abs=1e-9)
+    # the traction's error: quad's epsrel 1e-11 on the outer integral (positive panels, sqrt(e) outer <= 2 b
+    # arcsech(b) / (2 b)^(3/2), its value next to the edge) and the rounding of the O(e^(-1/2)) terms (8 EPS
+    # g_b / sqrt(2 b)), times sqrt(e) (2 rho / pi <= 2 b / pi); the forward rule weighs it with int 2 dtheta /
+    # sqrt(b - e + t) <= pi / sqrt(t) (48 Gauss nodes on a smooth integrand: truncation far below)
+    g_b = math.acosh(1 / b) + g_at_b
+    edge = 2 * b / math.pi * (1e-11 * 2 * b * math.acosh(1 / b) / (2 * b) ** 1.5 + 8 * EPS * g_b / math.sqrt(2 * b))
+    assert_close(forward, expected, "quad's epsrel and rounding of the traction, through the forward rule",
+                 atol=math.pi / math.sqrt(t) * edge)
     # the edge behaviour
     eps = [1e-4, 1e-6, 1e-8]  # below 1e-8 the O(e^(-1/2)) cancellation eats the digits
     k_b = math.sqrt(2 * b) * g_at_b / math.pi
     if g_at_b:
         misses = [abs(_traction_from_abel(g_at_b, b, e) * math.sqrt(e) - k_b) for e in eps]
-        # q sqrt(b - rho) = K_b + O(1) sqrt(b - rho) (the bounded part of q is of order the friction
-        # limit): the miss shrinks 10-fold per 100-fold step and is below 3 sqrt(b - rho)
+        # q sqrt(b - rho) = K_b + O(1) sqrt(b - rho): the miss shrinks 10-fold per 100-fold step (an order of
+        # the edge behaviour, not a tolerance)
         assert misses[1] < misses[0] / 5 and misses[2] < misses[1] / 5
-        assert misses[-1] < 3 * math.sqrt(eps[-1])
+        # and exactly so: the inverse is linear in G, and the part g_at_b of G is a constant on [0, b], whose
+        # inverse is g_at_b (2 rho / pi) / sqrt(e (2 b - e)) (-> K_b e^(-1/2)); the rest is the traction of g = 0.
+        # Both tractions share their inner and outer integrals (the same code on the same e), so they cancel in
+        # the difference but for the rounding of the terms (8 EPS of the terms' sizes: the edge term, and |q|)
+        for e in eps:
+            rho = b - e
+            q_g, q_0 = _traction_from_abel(g_at_b, b, e), _traction_from_abel(0.0, b, e)
+            singular = 2 * rho / math.pi / math.sqrt(e * (2 * b - e))
+            terms = singular * (2 * math.acosh(1 / b) + g_at_b) + abs(q_g) + abs(q_0)
+            assert_close(q_g - q_0, g_at_b * singular, "linearity: rounding of the terms", atol=8 * EPS * terms)
     else:
         gaps = [abs(1 - _traction_from_abel(0.0, b, e)) for e in eps]
-        # q -> 1 like 1 - C sqrt(b - rho): the distance to 1 shrinks 10-fold per 100-fold step
-        assert gaps[-1] < 1e-3 and gaps[1] < gaps[0] / 5 and gaps[2] < gaps[1] / 5
+        # q -> 1 like 1 - C sqrt(b - rho): the distance to 1 shrinks 10-fold per 100-fold step (an order)
+        assert gaps[1] < gaps[0] / 5 and gaps[2] < gaps[1] / 5
+        # continuously to 1: at the smallest e within ten times the square-root law from e = 1e-6 (an allowance
+        # of ten on the coefficient C, which the digits lost to cancellation at e = 1e-8 leave uncertain)
+        assert_within(gaps[-1], 10 * gaps[1] * math.sqrt(eps[2] / eps[1]), "ten times the sqrt law")
 
 
 def test_rigid_rotation_is_omega_plus_beta_torque():
     """u = omega r + sum c_n J1(lam_n r) vanishes on the stick disc with omega = Omega - beta T*."""
     b = 0.6
     state = solve_abel_fredholm(b)
-    assert state.rigid_rotation == pytest.approx(state.rotation_constant - kernels.TORQUE_ROTATION * state.torque,
-                                                 abs=1e-15)
+    # the same product and difference: two roundings of |Omega|
+    assert_close(state.rigid_rotation, state.rotation_constant - kernels.TORQUE_ROTATION * state.torque,
+                 "a product and a difference", atol=2 * EPS * abs(state.rotation_constant))
     lam = bessel_j2_zeros(4000)
     amplitudes = state.dini_amplitudes(lam.size)
     r = np.linspace(0.05, 0.55, 11)
     u = state.rigid_rotation * r + special.j1(np.outer(r, lam)) @ amplitudes
-    # the series converges like N^-3/2 at a fixed point of the stick disc (amplitudes ~ n^-5/2):
-    # with N = 4000 the truncation is below 1e-6; the wrong rigid rotation Omega would leave beta T* r ~ 0.3
-    assert np.max(np.abs(u)) < 1e-6
-    assert np.max(np.abs(u + kernels.TORQUE_ROTATION * state.torque * r)) > 0.1
+    # the series converges like N^-3/2 at a fixed point of the stick disc: amplitudes |c_n| <= A n^-5/2 (A the
+    # largest |c_n| n^(5/2) of the last 200) and |J1(lam r)| <= sqrt(2 / (pi lam r)), lam_n ~ n pi, bound the
+    # tail by A sqrt(2 / (pi^2 r)) sum_(n > N) n^-3 = A sqrt(2 / (pi^2 r)) / (2 N^2) (absolutely: the signs of
+    # J1 only make it smaller); plus the rounding of the N-term sum (N EPS of sum |c_n|)
+    n = np.arange(1, lam.size + 1)
+    scale = np.max(np.abs(amplitudes[-200:]) * n[-200:] ** 2.5)
+    tail = scale * np.sqrt(2 / (np.pi**2 * r.min())) / (2 * lam.size**2)
+    error = tail + lam.size * EPS * np.sum(np.abs(amplitudes))
+    assert_within(np.max(np.abs(u)), error, "Dini tail bound")
+    # the wrong rigid rotation Omega would leave beta T* r ~ 0.3: far beyond ten times that error bound
+    assert_beyond(np.max(np.abs(u + kernels.TORQUE_ROTATION * state.torque * r)), 10 * error,
+                  "Omega misses by beta T* r, beyond ten times the series' error")
 
 
 def test_torque_identity_for_the_uniform_load():
     """T* = (16/pi) int_0^1 s^2 Gq(s) ds equals 4 int_0^1 q r^2 dr = 4/3 for q = 1 (Gq = arcsech)."""
     with mpmath.workdps(30):
         value = 16 / mpmath.pi * mpmath.quad(lambda s: s * s * mpmath.asech(s), [0, 1])
-        assert abs(value - mpmath.mpf(4) / 3) < mpmath.mpf(10) ** -25
+        # a 30-digit tanh-sinh quadrature of an integrand with a log endpoint singularity: 1e-25, five digits
+        # above the working precision
+        assert_close(value, mpmath.mpf(4) / 3, "30-digit quadrature", atol=mpmath.mpf(10) ** -25)

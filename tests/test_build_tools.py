@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from tolerances import EPS, assert_close
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -89,13 +90,16 @@ def test_helper_modules_beside_a_script_are_dependencies(tmp_path, monkeypatch):
 
 
 def test_times_fields_and_records(tmp_path):
-    assert benchmark_build._seconds("0m0.250s") == pytest.approx(0.25)
-    assert benchmark_build._seconds("2m3.500s") == pytest.approx(123.5)
+    # decimal text to seconds: a parse and a product and sum of two numbers, a few roundings of the result
+    assert_close(benchmark_build._seconds("0m0.250s"), 0.25, "three roundings", rtol=3 * EPS)
+    assert_close(benchmark_build._seconds("2m3.500s"), 123.5, "three roundings", rtol=3 * EPS)
     (tmp_path / "1.rec").write_text("python\n/ck/results/logs/a.log\n100.0\n102.5\n0m0.010s 0m0.002s\n"
                                     "1m1.000s 0m0.500s\n")
     (record,) = benchmark_build.read_records(tmp_path, Path("/ck"))
-    assert record["log"] == "results/logs/a.log" and record["wall_seconds"] == pytest.approx(2.5)
-    assert record["cpu_seconds"] == pytest.approx(61.512)
+    assert record["log"] == "results/logs/a.log"
+    # differences and sums of four parsed times (up to ~100 s): a few roundings of the largest of them
+    assert_close(record["wall_seconds"], 2.5, "roundings of the parsed times", atol=8 * EPS * 102.5)
+    assert_close(record["cpu_seconds"], 61.512, "roundings of the parsed times", atol=8 * EPS * 61.512)
     rows = benchmark_build.aggregate([{"rule": "r", "wall_seconds": 1.0, "cpu_seconds": 2.0},
                                       {"rule": "r", "wall_seconds": 3.0, "cpu_seconds": 1.0},
                                       {"rule": "s", "wall_seconds": 9.0, "cpu_seconds": 0.5}])

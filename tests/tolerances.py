@@ -12,6 +12,10 @@ workflow/checks/fp_variants.py): a tolerance is never the error seen once.
   |actual - expected| <= atol + rtol |expected| (numpy arrays, floats or mpmath numbers).
 * ``assert_beyond(observed, floor, reason)``: a quantity that must exceed a floor (the check
   has power: the effect it looks for is there, well above the noise).
+* ``assert_sampled(observed, expected, standard_error, k, reason)``: a sampled statistic (a Monte
+  Carlo rate, a coverage, an estimate of a noisy record) within k of its standard errors.  Its margin
+  is a false-alarm probability, not a tenfold ratio: the headroom report lists these apart, with
+  the z-score |observed - expected| / standard_error against k.
 
 With ``TORSIONAL_HEADROOM=<directory>`` every comparison is recorded (test id, the line of the
 test, observed, tolerance, reason; the worst element of an array) and written to
@@ -28,7 +32,8 @@ import sys
 
 import numpy as np
 
-__all__ = ["EPS", "assert_within", "assert_close", "assert_beyond", "write_records", "seeds", "torque_accuracy",
+__all__ = ["EPS", "assert_within", "assert_close", "assert_beyond", "assert_sampled", "write_records", "seeds",
+           "torque_accuracy",
            "ROTATION_ACCURACY", "PROFILE_ACCURACY", "onset_remainder", "slip_rounding", "profile_accuracy",
            "spinning_table_bound", "rotation_b2_coefficient", "WEAK_FORM_TRUNCATION"]
 
@@ -196,6 +201,22 @@ def assert_beyond(observed, floor, reason: str) -> None:
     assert value > bound, f"{value:.3e} <= {bound:.3e} ({reason})"
 
 
+def assert_sampled(observed, expected, standard_error, k, reason: str, *, side: str = "both") -> None:
+    """A sampled statistic within k standard errors of its expectation: |z| <= k, z = (observed - expected) /
+    standard_error (``side="upper"``: z <= k only, ``"lower"``: z >= -k only).
+
+    The tolerance of a statistical test is its false-alarm probability (k = 3: 0.27 % two-sided for a normal
+    statistic; state the probability in ``reason`` when the statistic is not normal), so its headroom is not a
+    ratio of ten: the report lists these as kind ``sampled``, apart from the error bounds.
+    """
+    if side not in ("both", "upper", "lower"):
+        raise ValueError(f"side must be 'both', 'upper' or 'lower', got {side!r}")
+    z = (_float(observed) - _float(expected)) / _float(standard_error)
+    excess = abs(z) if side == "both" else (z if side == "upper" else -z)
+    _record("sampled", max(excess, 0.0), float(k), reason)
+    assert excess <= k, f"z = {z:.3g} beyond {k} standard errors ({reason})"
+
+
 def assert_close(actual, expected, reason: str, *, rtol=0.0, atol=0.0) -> None:
     """|actual - expected| <= atol + rtol |expected| elementwise (atol, rtol may be arrays)."""
     if _is_mp(actual) or _is_mp(expected):
@@ -205,7 +226,8 @@ def assert_close(actual, expected, reason: str, *, rtol=0.0, atol=0.0) -> None:
         return
     a = np.asarray(actual, dtype=float)
     e = np.asarray(expected, dtype=float)
-    error = np.abs(a - e)
+    with np.errstate(invalid="ignore"):  # inf - inf: handled below
+        error = np.abs(a - e)
     bound = np.asarray(atol, dtype=float) + np.asarray(rtol, dtype=float) * np.abs(e)
     error, bound = np.broadcast_arrays(error, bound)
     if error.size == 0:

@@ -11,7 +11,9 @@ Every tolerance should sit at least ten times above the error it bounds.
     .venv/bin/python workflow/checks/headroom.py --require 10        # exit status 1 below ratio 10
 
 Bounds that are exact roundings (``exact=True``: a correctly rounded double next to 1 can be off by
-half an ulp, no margin is possible) are listed separately.
+half an ulp, no margin is possible) are listed separately, and so are sampled statistics
+(``assert_sampled``: a rate or an estimate within k standard errors, whose margin is a false-alarm
+probability).
 """
 
 from __future__ import annotations
@@ -95,7 +97,8 @@ def main(argv=None) -> int:
         write_text(args.json, json.dumps(rows, indent=0, allow_nan=True), label="--json")
     merged = worst_by_comparison(rows)
     exact = [r for r in merged if r["kind"] == "exact"]
-    checked = [r for r in merged if r["kind"] != "exact"]
+    sampled = [r for r in merged if r["kind"] == "sampled"]
+    checked = [r for r in merged if r["kind"] not in ("exact", "sampled")]
     print(f"\n{len(checked)} comparisons (worst over {', '.join(args.variants)}); the {args.worst} smallest ratios "
           "tolerance/observed (floors: observed/floor):")
     print(f"{'ratio':>8} {'observed':>10} {'tolerance':>10} kind  variant  test  [line] reason")
@@ -106,6 +109,11 @@ def main(argv=None) -> int:
     if exact:
         print(f"\nexact roundings (half an ulp, no margin possible): {len(exact)}")
         for row in exact:
+            print(line(row))
+    if sampled:
+        print(f"\nsampled statistics (observed: |z| in standard errors, tolerance: k; the margin is a false-alarm "
+              f"probability): {len(sampled)}, the {min(args.worst, len(sampled))} largest |z|")
+        for row in sampled[: args.worst]:
             print(line(row))
     if failures:
         return 1
