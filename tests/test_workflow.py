@@ -129,6 +129,10 @@ def _cells_outside_math(text: str):
 def test_table_numbers_in_scientific_notation_are_in_math_mode(built):
     offenders = [f"{table.name}: {cell}" for table in (built / "tables").glob("*.tex")
                  for cell in _cells_outside_math(table.read_text())]
+    # and no programmer notation (2.8e+02) anywhere in a table
+    offenders += [f"{table.name}: {line}" for table in (built / "tables").glob("*.tex")
+                  for line in table.read_text().splitlines()
+                  if not line.startswith("%") and re.search(r"\d[eE][+-]?\d", line)]
     assert not offenders, offenders
 
 

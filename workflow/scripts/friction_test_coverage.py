@@ -114,13 +114,19 @@ def _coverage(entry):
 def _signed(x):
     if x is None:
         return "--"
-    return f"${100 * x:+.2g}$" if abs(x) < 10 else "$>10^3$"
+    if abs(x) >= 10:
+        return "$>10^3$"
+    percent = 100 * x
+    return f"${percent:+.0f}$" if abs(percent) >= 10 else f"${percent:+.2g}$"  # never 2.8e+02
 
 
 def _width(x):
     if x is None:
         return "--"
-    return f"{100 * x:.2g}" if x < 0.1 else f"{100 * x:.0f}"
+    percent = 100 * x
+    if percent >= 10:
+        return f"{percent:.0f}"
+    return f"{percent:.2g}" if percent >= 0.01 else "$<0.01$"  # never 1e-05
 
 
 def table(rows) -> str:
