@@ -78,7 +78,22 @@ estimates), and it ends where the data stop telling:
   T_s is the straight loop) the friction has only its lower bound.
 
 kappa <= ``KAPPA_MAX`` holds when C includes at least the shaft over the gauge length; an end of
-the friction interval set by it is named in ``assumed_end`` and ``message``.  ``noise_limited``
+the friction interval set by it is named in ``assumed_end`` and ``message``.
+
+A plateau that only clips the tips
+----------------------------------
+Where the twist noise buries the contact's twist (partial slip at 1e-4 rad), the best loop of the
+likelihood may put its gross-slip plateau 4/3 T_s just at the largest torques: the samples at the
+tips then trade their twist residuals for their distances to a flat line, about one residual
+variance each (LR about 10 over every partial-slip loop for two cycles of 200 samples), and that
+loop, stiff (G at 250-500 GPa for a true 80 GPa) and with T_s pinned to the tips, took a quarter of
+the records, its narrow intervals excluding the truth.  A plateau whose samples (fitted slope below
+``PLATEAU_SLOPE`` / C) span less than ``PLATEAU_RESOLVED`` noise levels of twist on every branch
+is not seen in the data, and its gain is not counted as evidence: the intervals are taken against
+the best loop whose plateau lies ``PLATEAU_CLEARANCE`` torque noise levels above its largest torque
+(``_clipping_reference``; the value reported is that loop's), and the clipping loops, below it,
+lie inside them.  A plateau a twist-controlled rig drives along (more than 20 noise levels per
+branch in the coverage study's noisy gross-slip scenario) is evidence and stays.  ``noise_limited``
 (with a ``NoiseLimitedFitWarning``) flags a result with a parameter not identified.
 ``bootstrap=N`` adds a parametric bootstrap (``fitting.bootstrap``): N records simulated from the
 fitted curve and noise, refitted, and bias-corrected percentile intervals (``bootstrap_interval``),

@@ -25,7 +25,9 @@ barely slips (every T_s above the largest torque is the same straight loop).  Ea
 by secant steps on the signed root r(psi) = +-sqrt(LR), nearly linear in psi, from the Wald end,
 each constrained fit started from the nearest profile point already computed; it stops when r is
 within ``ROOT_TOLERANCE`` of sqrt(F) (LR within 3 % of F: the interval's level within 0.3 %);
-inside a bracket by inverse quadratic interpolation, or bisection when that does not halve the bracket.
+inside a bracket by Newton's step from the bracket's end nearest the target, or bisection when that
+does not halve the step (``BRACKETED_STEPS`` more fits once bracketed: where kappa reaches its bound
+the profile has a kink and rises like a wall).
 An end beyond a parameter's limit (y = 0, or T_s above the largest torque, where the profile is
 flat) is unbounded.  A profile point below S_min means that the first fit stopped in a local
 minimum: ``BetterMinimum`` carries the point, and the caller starts again from there.
