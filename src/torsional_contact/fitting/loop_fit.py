@@ -88,7 +88,8 @@ tips then trade their twist residuals for their distances to a flat line, about 
 variance each (LR about 10 over every partial-slip loop for two cycles of 200 samples), and that
 loop, stiff (G at 250-500 GPa for a true 80 GPa) and with T_s pinned to the tips, took a quarter of
 the records, its narrow intervals excluding the truth.  A plateau whose samples (fitted slope below
-``PLATEAU_SLOPE`` / C) span less than ``PLATEAU_RESOLVED`` noise levels of twist on every branch
+``PLATEAU_SLOPE`` / C) span less than ``PLATEAU_RESOLVED`` noise levels of twist at every tip (a branch
+and a sign of the torque: a reversal missed in the noise joins two tips in one branch)
 is not seen in the data, and its gain is not counted as evidence: the intervals are taken against
 the best loop whose plateau lies ``PLATEAU_CLEARANCE`` torque noise levels above its largest torque
 (``_clipping_reference``; the value reported is that loop's), and the clipping loops, below it,
@@ -150,10 +151,11 @@ PLATEAU_FLOOR = 0.75
 REVERSAL_REACH = 6.0
 #: Restarts from a better minimum found by a profile.
 RESTARTS = 3
-#: A gross-slip plateau is resolved when the samples on it (fitted slope below ``PLATEAU_SLOPE`` / C) of one branch
-#: span this many noise levels hypot(s_theta, C s_T) of twist.  A plateau that clips the noisy tips of a partial-slip
-#: loop spans at most 4 (the tips' twist noise); a twist-controlled gross-slip loop (2.5e-3 rad, the noisy scenario
-#: of the coverage study: 1e-4 rad, 5 % of the torque range) more than 20 on each full branch.
+#: A gross-slip plateau is resolved when its samples (fitted slope below ``PLATEAU_SLOPE`` / C) at one tip (a branch
+#: and a sign of the torque) span this many noise levels hypot(s_theta, C s_T) of twist.  A plateau that clips the
+#: noisy tips of a partial-slip loop spans at most 4 (the tips' twist noise); a twist-controlled gross-slip loop
+#: (2.5e-3 rad, the noisy scenario of the coverage study: 1e-4 rad, 5 % of the torque range) more than 20 on each
+#: full branch.
 PLATEAU_RESOLVED = 8.0
 #: The plateau of the reference fit lies at least this many torque noise levels above the largest fitted torque.
 PLATEAU_CLEARANCE = 1.0
@@ -332,7 +334,7 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
     variance per sample within a torque noise level of the plateau (LR about 10 for the 1.3 T_s loop at 1e-4 rad),
     which the likelihood takes for evidence of a plateau, hence of a T_s and a stiff contact (G at 250-500 GPa with
     intervals that excluded the true 80 GPa in a quarter of the records).  A plateau whose samples span less than
-    ``PLATEAU_RESOLVED`` noise levels of twist on every branch is not seen in the data; its gain is not evidence.
+    ``PLATEAU_RESOLVED`` noise levels of twist at every tip is not seen in the data; its gain is not evidence.
     The reference is then the best loop whose plateau lies ``PLATEAU_CLEARANCE`` torque noise levels above the
     largest fitted torque: (p, S, Jacobian).  The intervals are taken against it (the clipped loops, below it,
     count as LR = 0, inside every interval).
@@ -346,7 +348,9 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
         return None  # the plateau is not reached
     on_plateau = slope < PLATEAU_SLOPE / compliance
     level = math.hypot(s_theta, compliance * s_t)
-    spans = [np.ptp(foot[on_plateau & (model.segment == j)]) for j in np.unique(model.segment[on_plateau])]
+    # one tip: a branch and a sign of the torque (a reversal missed in the noise joins two tips in one branch)
+    tip = 2 * model.segment + (fitted > 0)
+    spans = [np.ptp(foot[on_plateau & (tip == j)]) for j in np.unique(tip[on_plateau])]
     if spans and max(spans) >= PLATEAU_RESOLVED * level:
         return None  # a plateau the data show
     lower_reference = np.array(lower, dtype=float)
