@@ -25,7 +25,9 @@ barely slips (every T_s above the largest torque is the same straight loop).  Ea
 by secant steps on the signed root r(psi) = +-sqrt(LR), nearly linear in psi, from the Wald end,
 each constrained fit started from the nearest profile point already computed; it stops when r is
 within ``ROOT_TOLERANCE`` of sqrt(F) (LR within 3 % of F: the interval's level within 0.3 %);
-inside a bracket by inverse quadratic interpolation, or bisection when that does not halve the bracket.
+inside a bracket by Newton's step from the bracket's end nearest the target, or bisection when that
+does not halve the step (``BRACKETED_STEPS`` more fits once bracketed: where kappa reaches its bound
+the profile has a kink and rises like a wall).
 An end beyond a parameter's limit (y = 0, or T_s above the largest torque, where the profile is
 flat) is unbounded.  A profile point below S_min means that the first fit stopped in a local
 minimum: ``BetterMinimum`` carries the point, and the caller starts again from there.
@@ -48,6 +50,10 @@ ROOT_TOLERANCE = 0.015
 #: Constrained fits per end at most (well-behaved profiles take one to three); an end not pinned down by then is the
 #: outer end of its bracket (the interval errs wide), or unbounded when there is no bracket.
 MAX_PROFILE_STEPS = 8
+#: Further constrained fits allowed once an end is bracketed: where the profile turns into the wall of the bound on
+#: kappa (the slip torque's upper end) it has a kink, and eight steps could stop with the bracket's outer end far up
+#: the wall (LR 105 against F = 3.9), an end the data reject.
+BRACKETED_STEPS = 4
 #: Function evaluations per least-squares fit at most (a fit from a good start takes 3-10).
 MAX_EVALUATIONS = 60
 #: The same for a constrained fit: one near the end of an interval starts close to its minimum and takes 2-6; one far
@@ -174,6 +180,18 @@ def _slope(model: LoopModel, p, kind: str) -> float:
     return 2.0 * float(d @ column)
 
 
+def _bracketed_newton(points, lo: float, hi: float, target: float) -> float:
+    """Newton's step on r from that end of the bracket (lo, hi) nearest the target whose step stays inside (nan: none).
+
+    Past a kink of the profile (where kappa reaches its bound, r grows steeply and nearly linearly) Newton's step
+    from the shallow side overshoots; the one from the end on the wall lands close to the root.
+    """
+    candidates = sorted((abs(pt[1] - target), pt[0] + (target - pt[1]) / pt[2]) for pt in points
+                        if pt[0] in (lo, hi) and pt[2] > 0)
+    inside = [step for _, step in candidates if lo < step < hi]
+    return inside[0] if inside else math.nan
+
+
 def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str, side: int, first_step: float,
                 critical: float, lower, upper, kappa_max: float, limit: float | None = None,
                 limit_lr: float | None = None, better_minimum: bool = True) -> ProfileEnd:
@@ -233,7 +251,7 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     delta = min(max(delta, 1e-3 * scale), 0.2 * scale, reach)
     lo, hi = 0.0, math.inf  # the bracket: r < target at lo, r >= target at hi
     step, last_step = math.inf, math.inf
-    while steps < MAX_PROFILE_STEPS:
+    while steps < MAX_PROFILE_STEPS or (hi < math.inf and steps < MAX_PROFILE_STEPS + BRACKETED_STEPS):
         r, p = evaluate(delta)
         at_cap = kind != "compliance" and p[1] >= kappa_max * (1 - 1e-6)
         if abs(r - target) <= ROOT_TOLERANCE * target:
@@ -247,6 +265,7 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
             hi = delta
         newton = delta + (target - r) / slope if slope > 0 else math.nan
         if hi < math.inf:  # bracketed: Newton's step when it stays inside and shrinks fast enough, else bisection
+            newton = _bracketed_newton(points, lo, hi, target)
             if lo < newton < hi and abs(newton - delta) < 0.5 * last_step:
                 last_step, step = step, abs(newton - delta)
                 delta = newton
