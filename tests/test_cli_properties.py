@@ -449,9 +449,16 @@ def test_standard_output_on_dev_full(argv):
     assert line == f"{PREFIX}standard output: No space left on device"
 
 
+def _sigint_as_at_a_terminal():
+    """Ctrl-C's default disposition in the child: a test run started in the background (``cmd &``) ignores SIGINT,
+    the children inherit that, and Python then never raises KeyboardInterrupt."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def test_ctrl_c_is_one_line_and_status_130():
     process = subprocess.Popen(PYTHON + ["reference", "--stick-radius", "0.5", "--n-terms", "1000", "--digits",
-                                         "200"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                                         "200"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               preexec_fn=_sigint_as_at_a_terminal)
     time.sleep(3)
     process.send_signal(signal.SIGINT)
     out, err = process.communicate(timeout=60)

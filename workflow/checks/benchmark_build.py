@@ -223,16 +223,23 @@ def benchmark_tests(checkout: Path, scratch: Path) -> dict:
     load_before = os.getloadavg()
     wall, cpu, status = timed(["bash", "workflow/test.sh", f"--junitxml={junit}"], checkout, environment(checkout),
                               scratch / "tests.log")
-    files, slowest = {}, []
+    files, slowest, failed = {}, [], []
     if junit.exists():
         for case in ElementTree.parse(junit).iter("testcase"):
+            if case.find("failure") is not None or case.find("error") is not None:
+                failed.append(f"{case.get('classname')}::{case.get('name')}")
             slowest.append({"test": f"{case.get('classname')}::{case.get('name')}",
                             "seconds": float(case.get("time") or 0)})
             name = ".".join((case.get("classname") or "?").split(".")[:2])  # tests.test_module[.Class]
             row = files.setdefault(name, {"file": name, "tests": 0, "seconds": 0.0})
             row["tests"] += 1
             row["seconds"] += float(case.get("time") or 0.0)
-    return {"command": "bash workflow/test.sh", "status": status, "wall_seconds": wall, "cpu_seconds": cpu,
+    if status != 0:  # the scratch folder goes with the run: say what failed here
+        tail = "\n".join((scratch / "tests.log").read_text(errors="replace").splitlines()[-30:])
+        print(f"{tail}\nbenchmark_build: the test command failed (status {status}): {failed}", file=sys.stderr,
+              flush=True)
+    return {"command": "bash workflow/test.sh", "status": status, "failed": failed, "wall_seconds": wall,
+            "cpu_seconds": cpu,
             "load_average_before": load_before[0], "load_average_after": os.getloadavg()[0],
             "files": sorted(files.values(), key=lambda r: -r["seconds"]),
             "slowest": sorted(slowest, key=lambda r: -r["seconds"])[:15]}
