@@ -128,17 +128,24 @@ def test_twist_driven_memory_rules_match_the_torque_driven_ones(seed):
     assert_close(turning / slip_torque, path[reversal[:-1]], "2 M skeleton errors", atol=bound)
 
 
-@pytest.mark.parametrize("seed", seeds())
-@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
-def test_foot_points_minimise_each_samples_distance(rig_kind, seed):
-    """Every d_i^2 against a brute-force minimisation of the sample's misfit over the true twist (a grid of 2001
-    twists over +-8 noise levels, then Brent's method on the best cell)."""
+def _noisy_record(rig_kind: str, seed: int):
+    """(torque, twist, s_T, s_theta): 1.5 cycles of 80 samples of RIG at 1.3 T_s (torque-controlled, partial slip)
+    or 2.5 mrad (twist-controlled, gross slip), with noise 0.5 % of the torque range and 1e-5 rad."""
     if rig_kind.startswith("torque"):
         torque, twist = torque_controlled(RIG, 1.3 * RIG.slip_torque, cycles=1.5, samples_per_cycle=80)
     else:
         torque, twist = twist_controlled(RIG, 2.5e-3, cycles=1.5, samples_per_cycle=80)
     s_t, s_w = 0.005 * np.ptp(torque), 1e-5
     torque, twist = noisy(torque, twist, s_t, s_w, np.random.default_rng(seed))
+    return torque, twist, s_t, s_w
+
+
+@pytest.mark.parametrize("seed", seeds())
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_foot_points_minimise_each_samples_distance(rig_kind, seed):
+    """Every d_i^2 against a brute-force minimisation of the sample's misfit over the true twist (a grid of 2001
+    twists over +-8 noise levels, then Brent's method on the best cell)."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, seed)
     model = _model(torque, twist, s_t, s_w)
     p = _true_parameters(twist, model.reversals)
     distances = model.sample_distances(p)
@@ -169,12 +176,7 @@ def test_residual_jacobian_against_finite_differences(rig_kind, seed, monkeypatc
     """d(residuals)/dp (the envelope theorem at the foot points, and the turning points' torques) against central
     differences of the residuals with every foot point converged to rounding."""
     monkeypatch.setattr(loop_model, "FOOT_GAIN", 1e-26)
-    if rig_kind.startswith("torque"):
-        torque, twist = torque_controlled(RIG, 1.3 * RIG.slip_torque, cycles=1.5, samples_per_cycle=80)
-    else:
-        torque, twist = twist_controlled(RIG, 2.5e-3, cycles=1.5, samples_per_cycle=80)
-    s_t, s_w = 0.005 * np.ptp(torque), 1e-5
-    torque, twist = noisy(torque, twist, s_t, s_w, np.random.default_rng(seed))
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, seed)
     model = _model(torque, twist, s_t, s_w)
     p = _true_parameters(twist, model.reversals) * np.concatenate([[1.01, 1.05, 0.99, 1.02],
                                                                     np.ones(model.reversals.size)])
