@@ -1,7 +1,8 @@
 """The core install: a wheel of the package in a clean virtual environment with numpy, scipy and pint only.
 
 The wheel is built from this checkout (``pip wheel --no-deps``) and installed into a new virtual
-environment (no system site packages) with its declared dependencies, pinned to the versions of
+environment (no system site packages, no pip: the development environment's pip installs into it) with its declared
+dependencies, pinned to the versions of
 environment.txt (``-c``), so that numpy and scipy are the versions of the development environment.
 There ``solve``, ``history``, the specimen and the command line's ``solve``, ``history`` (turning points
 and a signal file) and ``fit`` run, the extras' packages are not importable, and the subcommands
@@ -80,17 +81,19 @@ def core_python(tmp_path_factory):
     subprocess.run([sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "--wheel-dir", str(folder / "dist"),
                     str(ROOT)], check=True, capture_output=True, env=env)
     (wheel,) = (folder / "dist").glob("torsional_contact-*.whl")
-    subprocess.run([sys.executable, "-m", "venv", str(folder / "venv")], check=True, env=env)  # no site packages
+    # no site packages, and no pip of its own (installing pip into it costs more than the rest): the development
+    # environment's pip installs into it (``pip --python``), resolving the wheel's declared dependencies there
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(folder / "venv")], check=True, env=env)
     python = folder / "venv" / "bin" / "python"
-    subprocess.run([str(python), "-m", "pip", "install", "--quiet", "-c", str(ROOT / "environment.txt"), str(wheel)],
-                   check=True, capture_output=True, env=env)
+    subprocess.run([sys.executable, "-m", "pip", "--python", str(python), "install", "--quiet", "-c",
+                    str(ROOT / "environment.txt"), str(wheel)], check=True, capture_output=True, env=env)
     return python
 
 
 @pytest.mark.slow
 def test_core_install_runs_solve_history_and_the_cli_with_the_same_numbers(core_python, tmp_path):
-    installed = subprocess.run([str(core_python), "-m", "pip", "list", "--format", "json"], check=True,
-                               capture_output=True, text=True).stdout
+    installed = subprocess.run([sys.executable, "-m", "pip", "--python", str(core_python), "list", "--format", "json"],
+                               check=True, capture_output=True, text=True).stdout
     names = {p["name"].lower() for p in json.loads(installed)}
     assert names - {"pip", "setuptools", "wheel"} == {"torsional_contact", "numpy", "scipy", "pint", "flexcache",
                                                       "flexparser", "platformdirs", "typing_extensions"}, names
