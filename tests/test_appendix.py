@@ -2,7 +2,7 @@
 
 * beta = 0.60531512622...: from the Dini series of the Neumann-to-Dirichlet kernel G, through
   the identity G = G_hs + G_c - 4 beta r rho integrated against r rho (G_hs by its Abel form,
-  G_c by its xi-integral in mpmath), against ``kernels.TORQUE_ROTATION``;
+  G_c by its xi-integral in Arb and mpmath), against ``kernels.TORQUE_ROTATION``;
 * the half-space part of the Abel reduction, int G_hs q rho drho = S[t Gq(t)], for two loads;
 * the regularity argument in both directions: for a smooth G on [0, b], the Abel inverse gives
   a stick-side traction K_b (b - rho)^(-1/2) + O(1) with K_b = sqrt(2b) g(b) / pi, and, when
@@ -15,6 +15,7 @@
 
 import math
 
+import flint
 import mpmath
 import numpy as np
 import pytest
@@ -27,19 +28,44 @@ from torsional_contact.special import integrals
 from torsional_contact.special.zeros import bessel_j2_zeros
 
 
+def _cylinder_integrand_arb(x):
+    """(F/xi^2)^2 - xi^2/36) K2/I2 at an mpf point, in Arb balls (python-flint), to the working digits.
+
+    The product cancels (to O(xi^4) near 0, where K2/I2 ~ 16/xi^4): the working precision is doubled until
+    the ball is relatively as small as the working digits ask.  Arb's 1F2 has no large-argument expansion
+    (it gives no finite ball beyond a few hundred), so this serves the finite panels only.
+    """
+    digits = mpmath.mp.dps + 5
+    precision = 8 * digits
+    for _ in range(6):
+        flint.ctx.prec = precision
+        t = flint.arb(mpmath.nstr(x, digits + 10, strip_zeros=False))
+        f = t / 6 * (t**2 / 4).hypgeom([flint.arb(3) / 2], [2, flint.arb(5) / 2])
+        value = (f**2 - t**2 / 36) * t.bessel_k(2) / t.bessel_i(2)
+        if value.is_finite() and value.rad() <= abs(value.mid()) * flint.arb(10) ** -digits:
+            return mpmath.mpf(value.mid().str(digits + 5, radius=False))
+        precision *= 2
+    raise ArithmeticError(f"no {digits}-digit ball for the double moment's integrand at xi = {x}")
+
+
 def _cylinder_part_of_the_double_moment():
     """int int G_c(r, rho) r rho dr drho = (2/pi) int_0^inf [(F/xi^2)^2 - xi^2/36] K2/I2 dxi, 30 digits.
 
     F(x) = int_0^x y I1(y) dy = x^3/6 1F2(3/2; 2, 5/2; x^2/4).  The integrand decays only like
     xi^-3 (the image point r + rho = 2 is reached at r = rho = 1), so the range goes to infinity;
     Gauss-Legendre on the finite panels keeps its nodes away from xi = 0, where the subtraction
-    cancels to O(xi^4) against K2/I2 ~ 16/xi^4.
+    cancels to O(xi^4) against K2/I2 ~ 16/xi^4.  The finite panels take their integrand from Arb (ten times
+    faster than mpmath's Bessel K there, and the same digits), the tail beyond 80 from mpmath.
     """
     def integrand(x):
         f = x / 6 * mpmath.hyp1f2(1.5, 2, 2.5, x**2 / 4)
         return (f**2 - x**2 / 36) * mpmath.besselk(2, x) / mpmath.besseli(2, x)
 
-    finite = mpmath.quad(integrand, [0, 1, 4, 16, 40, 80], method="gauss-legendre")
+    saved = flint.ctx.prec
+    try:
+        finite = mpmath.quad(_cylinder_integrand_arb, [0, 1, 4, 16, 40, 80], method="gauss-legendre")
+    finally:
+        flint.ctx.prec = saved
     return 2 / mpmath.pi * (finite + mpmath.quad(integrand, [80, mpmath.inf]))
 
 
