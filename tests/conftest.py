@@ -11,9 +11,12 @@ def _restore_mpmath_precision():
     mpmath.mp.prec = saved
 
 
-#: Module fixtures that are expensive to compute: the tests that use one share a pytest-xdist group, so that
-#: ``--dist loadgroup`` (workflow/test.sh, workflow/checks) computes each once instead of once per worker.
-SHARED_FIXTURES = {"references": "abel-fredholm-references"}
+#: Module fixtures that are expensive to compute, (test module, fixture) -> group: the tests that use one share a
+#: pytest-xdist group, so that ``--dist loadgroup`` (workflow/test.sh, workflow/checks) computes each once instead
+#: of once per worker.
+SHARED_FIXTURES = {("test_reference_abel_fredholm", "references"): "abel-fredholm-references",
+                   ("test_errata", "table"): "errata-table",
+                   ("test_finite_element", "coarse"): "finite-element-coarse"}
 
 
 @pytest.hookimpl(tryfirst=True)
@@ -24,8 +27,8 @@ def pytest_collection_modifyitems(config, items):
         names = getattr(item, "fixturenames", ())
         if item.module.__name__.endswith("test_errata") and "table" in names:
             item.add_marker(pytest.mark.slow)
-        for fixture, group in SHARED_FIXTURES.items():
-            if fixture in names:
+        for (module, fixture), group in SHARED_FIXTURES.items():
+            if item.module.__name__.endswith(module) and fixture in names:
                 item.add_marker(pytest.mark.xdist_group(group))
 
 
