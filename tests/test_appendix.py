@@ -19,6 +19,7 @@ import flint
 import mpmath
 import numpy as np
 import pytest
+from arb_points import at_mpf
 from scipy import integrate, special
 from tolerances import EPS, assert_beyond, assert_close, assert_within
 
@@ -28,24 +29,10 @@ from torsional_contact.special import integrals
 from torsional_contact.special.zeros import bessel_j2_zeros
 
 
-def _cylinder_integrand_arb(x):
-    """(F/xi^2)^2 - xi^2/36) K2/I2 at an mpf point, in Arb balls (python-flint), to the working digits.
-
-    The product cancels (to O(xi^4) near 0, where K2/I2 ~ 16/xi^4): the working precision is doubled until
-    the ball is relatively as small as the working digits ask.  Arb's 1F2 has no large-argument expansion
-    (it gives no finite ball beyond a few hundred), so this serves the finite panels only.
-    """
-    digits = mpmath.mp.dps + 5
-    precision = 8 * digits
-    for _ in range(6):
-        flint.ctx.prec = precision
-        t = flint.arb(mpmath.nstr(x, digits + 10, strip_zeros=False))
-        f = t / 6 * (t**2 / 4).hypgeom([flint.arb(3) / 2], [2, flint.arb(5) / 2])
-        value = (f**2 - t**2 / 36) * t.bessel_k(2) / t.bessel_i(2)
-        if value.is_finite() and value.rad() <= abs(value.mid()) * flint.arb(10) ** -digits:
-            return mpmath.mpf(value.mid().str(digits + 5, radius=False))
-        precision *= 2
-    raise ArithmeticError(f"no {digits}-digit ball for the double moment's integrand at xi = {x}")
+def _cylinder_integrand_arb(t):
+    """(F/xi^2)^2 - xi^2/36) K2/I2 of an Arb ball (tests/arb_points.py evaluates it at mpmath's points)."""
+    f = t / 6 * (t**2 / 4).hypgeom([flint.arb(3) / 2], [2, flint.arb(5) / 2])
+    return (f**2 - t**2 / 36) * t.bessel_k(2) / t.bessel_i(2)
 
 
 def _cylinder_part_of_the_double_moment():
@@ -61,11 +48,8 @@ def _cylinder_part_of_the_double_moment():
         f = x / 6 * mpmath.hyp1f2(1.5, 2, 2.5, x**2 / 4)
         return (f**2 - x**2 / 36) * mpmath.besselk(2, x) / mpmath.besseli(2, x)
 
-    saved = flint.ctx.prec
-    try:
-        finite = mpmath.quad(_cylinder_integrand_arb, [0, 1, 4, 16, 40, 80], method="gauss-legendre")
-    finally:
-        flint.ctx.prec = saved
+    # Arb's 1F2 has no large-argument expansion (no finite ball beyond a few hundred): Arb on the finite panels only
+    finite = mpmath.quad(lambda x: at_mpf(_cylinder_integrand_arb, x), [0, 1, 4, 16, 40, 80], method="gauss-legendre")
     return 2 / mpmath.pi * (finite + mpmath.quad(integrand, [80, mpmath.inf]))
 
 
