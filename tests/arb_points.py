@@ -16,21 +16,25 @@ import mpmath
 DOUBLINGS = 6
 
 #: Bits below which Arb's Bessel K of integer order is slow (python-flint 0.9: K_2 at six arguments in [3, 79]
-#: took 100-140 ms at 200-400 bits, 5-10 ms at 480-1000 bits): a speed choice, the ball decides the accuracy.
-FAST_PRECISION = 512
+#: took 100-140 ms at 200-400 bits, 5-10 ms at 480-1000 bits): a starting precision for integrands with K, a speed
+#: choice (the ball decides the accuracy).  Other functions are faster at fewer bits (J_1: 0.04 ms at 280 bits,
+#: 0.07 ms at 512).
+BESSEL_K_BITS = 512
 
 
-def at_mpf(function, x):
-    """``function`` (arb -> arb) at the mpf ``x``, as an mpf with the working digits of mpmath."""
+def at_mpf(function, x, absolute=False, bits=0):
+    """``function`` (arb -> arb) at the mpf ``x``, as an mpf with the working digits of mpmath (relative, or with
+    ``absolute`` absolute: for a function of size one that may cancel to nearly zero, such as a residual), starting
+    at a working precision of at least ``bits``."""
     digits = mpmath.mp.dps + 5
-    # bits: a little over twice the digits, and at least FAST_PRECISION
-    precision = max(8 * digits, FAST_PRECISION)
+    precision = max(8 * digits, bits)  # bits: a little over twice the digits
     saved = flint.ctx.prec
     try:
         for _ in range(DOUBLINGS):
             flint.ctx.prec = precision
             value = function(flint.arb(mpmath.nstr(x, digits + 10, strip_zeros=False)))
-            if value.is_finite() and value.rad() <= abs(value.mid()) * flint.arb(10) ** -digits:
+            scale = 1 if absolute else abs(value.mid())
+            if value.is_finite() and value.rad() <= scale * flint.arb(10) ** -digits:
                 return mpmath.mpf(value.mid().str(digits + 5, radius=False))
             precision *= 2
     finally:

@@ -11,7 +11,7 @@ import warnings
 import mpmath
 import numpy as np
 import pytest
-from arb_points import at_mpf
+from arb_points import BESSEL_K_BITS, at_mpf
 from numpy.polynomial import legendre
 from scipy import special
 from tolerances import (
@@ -65,7 +65,7 @@ def _graded(a, b, toward, n=24, levels=30):
 def test_torque_rotation_constant_mpmath():
     mpmath.mp.dps = 25
     # the integrand in Arb (tests/arb_points.py): mpmath's Bessel K at 25 digits is ten times slower
-    f = lambda x: at_mpf(lambda t: t.bessel_k(2) * (1 - t**2 / (8 * t.bessel_i(2))), x)  # noqa: E731
+    f = lambda x: at_mpf(lambda t: t.bessel_k(2) * (1 - t**2 / (8 * t.bessel_i(2))), x, bits=BESSEL_K_BITS)  # noqa: E731
     beta = mpmath.mpf(1) / 2 + mpmath.quad(f, [0, 1, 4, 16, 48, 80]) / mpmath.pi  # K2(80) ~ 1e-36
     # the double constant is BETA correctly rounded: half an ulp (one allowed)
     assert_within(abs(float(beta) - kernels.TORQUE_ROTATION), np.spacing(kernels.TORQUE_ROTATION), "one ulp",

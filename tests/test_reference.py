@@ -11,9 +11,11 @@ import subprocess
 import sys
 import warnings
 
+import flint
 import mpmath
 import numpy as np
 import pytest
+from arb_points import at_mpf
 from tolerances import EPS, assert_close, assert_within
 
 from torsional_contact.diagnostics import AccuracyWarning
@@ -127,13 +129,21 @@ def test_regularity_condition_and_stick_condition_hold():
         )
         assert_within(abs(traction - 1), mpmath.mpf(10) ** -35, "40 digits less the 30-term sum's cancellation")
 
-        # the extra row (iv): int_0^1 R(r) r^2 dr = 0 with R the stick / slip residual, by quadrature
+        # the extra row (iv): int_0^1 R(r) r^2 dr = 0 with R the stick / slip residual, by quadrature; the residual
+        # in Arb (tests/arb_points.py: mpmath's J1 at 40 digits made this test take half a minute)
+        decimals = mpmath.mp.dps + 15
+        terms = [(mpmath.nstr(c, decimals), mpmath.nstr(x, decimals))
+                 for c, x in zip(sol.amplitudes, sol.eigenvalues, strict=True)]
+        rotation, torque = mpmath.nstr(sol.rigid_rotation, decimals), mpmath.nstr(sol.torque, decimals)
+
+        def residual_arb(t, stick):
+            series = [flint.arb(c) * (flint.arb(x) * t).bessel_j(1) for c, x in terms]
+            if stick:
+                return flint.arb(rotation) * t + sum(series)
+            return sum(s * flint.arb(x) for s, (_, x) in zip(series, terms, strict=True)) - flint.arb(torque) * t + 1
+
         def residual(r):
-            series = [c * mpmath.besselj(1, x * r) for c, x in zip(sol.amplitudes, sol.eigenvalues, strict=True)]
-            if r < b:
-                return sol.rigid_rotation * r + mpmath.fsum(series)
-            lam = sol.eigenvalues
-            return mpmath.fsum(s * x for s, x in zip(series, lam, strict=True)) - sol.torque * r + 1
+            return at_mpf(lambda t: residual_arb(t, r < b), r, absolute=True)
 
         lam_max = sol.eigenvalues[-1]
         moment = _quad(lambda r: residual(r) * r * r, 0, b, lam_max) + _quad(
