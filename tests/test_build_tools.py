@@ -49,6 +49,43 @@ def test_statement_walk_finds_every_import_of_every_source(monkeypatch):
         assert found == _all_import_nodes(path), path
 
 
+def _sources():
+    return sorted([*ROOT.glob("workflow/scripts/*.py"), *ROOT.glob("src/torsional_contact/**/*.py")])
+
+
+def _as_data(records):
+    return [[module, list(names), level] for module, names, level in records]
+
+
+def test_cached_import_statements_are_those_of_the_text(tmp_path, monkeypatch):
+    """The on-disk cache gives each source the statements a fresh parse gives; an edited file is parsed anew."""
+    monkeypatch.setattr(dependencies, "CACHE", tmp_path / "cache" / "imports.json")
+    first = dependencies._StatementCache()
+    fresh = {path: _as_data(dependencies._statement_records(path.read_text())) for path in _sources()}
+    assert all(_as_data(first.records(path)) == fresh[path] for path in fresh)
+    first.save()
+    second = dependencies._StatementCache()  # from the file
+    assert not second.changed and all(_as_data(second.records(path)) == fresh[path] for path in fresh)
+    assert not second.changed  # nothing parsed: every statement came from the file
+    edited = tmp_path / "edited.py"
+    edited.write_text("import json\n")
+    assert _as_data(second.records(edited)) == [[None, ["json"], 0]]
+    edited.write_text("from torsional_contact import fields\n")
+    assert _as_data(second.records(edited)) == [["torsional_contact", ["fields"], 0]] and second.changed
+
+
+def test_a_corrupt_import_cache_is_replaced_with_a_warning(tmp_path, monkeypatch):
+    cache = tmp_path / "imports.json"
+    cache.write_text("{not json")
+    monkeypatch.setattr(dependencies, "CACHE", cache)
+    with pytest.warns(UserWarning, match="parsed anew"):
+        statements = dependencies._StatementCache()
+    script = ROOT / "workflow" / "scripts" / "fig3_torque_curve.py"
+    assert _as_data(statements.records(script)) == _as_data(dependencies._statement_records(script.read_text()))
+    statements.save()
+    assert len(json.loads(cache.read_text())) == 1
+
+
 def test_imports_in_nested_blocks_are_dependencies(tmp_path, monkeypatch):
     monkeypatch.chdir(ROOT)
     script = tmp_path / "nested.py"

@@ -514,6 +514,9 @@ SCRATCH_WRITES = {
     ("benchmark_build.py", "shim.write_text("),  # the timing wrappers, in a TemporaryDirectory
     ("benchmark_build.py", 'open(log, "w")'),  # Snakemake's and the suite's logs, in the same TemporaryDirectory
     ("_plotting.py", "fig.savefig(tmp,"),  # the figure writer itself: into the temporary name of atomic_path
+    # the Snakefile's cache of import statements in .snakemake (no user's path), through its own temporary file
+    ("dependencies.py", "temporary.write_text(json.dumps(keep))"),
+    ("dependencies.py", "os.replace(temporary, CACHE)"),
 }
 DIRECT_WRITE = re.compile(r"open\([^)]*[\"'][wax]b?\+?[\"']|\.savefig\(|np\.save(txt|z)?\(|\.to_csv\(|"
                           r"os\.(replace|rename)\(|shutil\.(move|copy\w*)\(|\.write_(text|bytes)\(|json\.dump\(")

@@ -9,10 +9,20 @@ first on ``sys.path``).
 
 import ast
 import functools
+import hashlib
+import json
+import os
+import warnings
 from pathlib import Path
 
 SRC = Path("src")
 PACKAGE = "torsional_contact"
+
+#: Each source's import statements, keyed by a hash of its text: parsing the ~150 sources costs about 0.4 CPU-s at
+#: every Snakemake start (each build and dry run), reading and hashing them 0.01 s.  Only the statements are
+#: cached (they depend on the text alone); what they resolve to (files, helper modules beside a script) is worked
+#: out anew each time.
+CACHE = Path(".snakemake") / "import-statements.json"
 
 
 def _module_file(dotted):
@@ -70,40 +80,92 @@ def _import_statements(body):
                 yield from _import_statements(block)
 
 
+def _statement_records(text):
+    """The import statements of a source text as plain data: ``(module or None, names, level)``, module None for
+    ``import names`` (level 0), else ``from module import names`` (module "" for ``from . import names``)."""
+    records = []
+    for node in _import_statements(ast.parse(text).body):
+        names = [alias.name for alias in node.names]
+        if isinstance(node, ast.Import):
+            records.append((None, names, 0))
+        else:
+            records.append((node.module or "", names, node.level))
+    return records
+
+
+class _StatementCache:
+    """The import statements of each source text, read from and written back to ``CACHE`` (see there)."""
+
+    def __init__(self):
+        self.used, self.changed = {}, False
+        try:
+            self.stored = json.loads(CACHE.read_text())
+        except FileNotFoundError:
+            self.stored = {}
+        except (OSError, ValueError) as error:  # unreadable or corrupt: parse everything, rewrite the file
+            warnings.warn(f"{CACHE}: {error}; the import statements are parsed anew", stacklevel=2)
+            self.stored = {}
+
+    def records(self, path):
+        text = path.read_text()
+        key = hashlib.sha256(text.encode()).hexdigest()
+        if key not in self.stored:
+            self.stored[key], self.changed = _statement_records(text), True
+        self.used[key] = self.stored[key]
+        return self.stored[key]
+
+    def save(self):
+        """Write the statements back (atomically) when some were parsed; keep only the entries of the current
+        sources once the file holds many more than they need (old versions of edited files)."""
+        if not self.changed:
+            return
+        keep = self.stored if len(self.stored) <= 4 * len(self.used) else self.used
+        temporary = CACHE.with_name(f".{CACHE.name}.{os.getpid()}")
+        try:
+            CACHE.parent.mkdir(parents=True, exist_ok=True)
+            temporary.write_text(json.dumps(keep))
+            os.replace(temporary, CACHE)
+        except OSError as error:  # a cache only: the dependencies are right without it, the next start parses again
+            warnings.warn(f"{CACHE} not written ({error}); the next start parses the sources again", stacklevel=2)
+            temporary.unlink(missing_ok=True)
+            return
+        self.changed = False
+
+
+_STATEMENTS = _StatementCache()
+
+
 def _imports_uncached(path):
     """Dotted package modules one file imports (absolute or relative), with what they pull in."""
     path = Path(path)
-    tree = ast.parse(path.read_text())
     inside = SRC in path.parents
     here = _dotted(path) if inside else ""
     package = here if path.name == "__init__.py" else here.rpartition(".")[0]
     found = set()
-    for node in _import_statements(tree.body):
-        if not inside and not getattr(node, "level", 0):  # a helper module beside a workflow script
-            names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
-            found.update(_local(path, name) for name in names if (path.parent / f"{name}.py").exists())
-        if isinstance(node, ast.Import):
-            found.update(a.name for a in node.names if a.name.split(".")[0] == PACKAGE)
+    for module, names, level in _STATEMENTS.records(path):
+        if not inside and not level:  # a helper module beside a workflow script
+            bare = names if module is None else [module]
+            found.update(_local(path, name) for name in bare if (path.parent / f"{name}.py").exists())
+        if module is None:
+            found.update(name for name in names if name.split(".")[0] == PACKAGE)
             continue
-        if not isinstance(node, ast.ImportFrom):
-            continue
-        if node.level:
+        if level:
             if not inside:
                 continue
             base = package.split(".")
-            base = base[: len(base) - (node.level - 1)]
-            dotted_module = ".".join(base + ([node.module] if node.module else []))
-        elif node.module and node.module.split(".")[0] == PACKAGE:
-            dotted_module = node.module
+            base = base[: len(base) - (level - 1)]
+            dotted_module = ".".join(base + ([module] if module else []))
+        elif module and module.split(".")[0] == PACKAGE:
+            dotted_module = module
         else:
             continue
         found.add(dotted_module)
         exports = _lazy_exports() if dotted_module == PACKAGE else {}
-        for alias in node.names:
-            if _module_file(f"{dotted_module}.{alias.name}"):  # from package import submodule
-                found.add(f"{dotted_module}.{alias.name}")
-            elif alias.name in exports:  # a name the lazy __init__ imports on first use
-                found.add(f"{PACKAGE}.{exports[alias.name]}")
+        for name in names:
+            if _module_file(f"{dotted_module}.{name}"):  # from package import submodule
+                found.add(f"{dotted_module}.{name}")
+            elif name in exports:  # a name the lazy __init__ imports on first use
+                found.add(f"{PACKAGE}.{exports[name]}")
     return found
 
 
@@ -128,7 +190,9 @@ def _library_files_cached(script):
 
 def library_files(script):
     """Library files a workflow script depends on: the transitive closure of its imports (a new list)."""
-    return list(_library_files_cached(str(script)))
+    files = list(_library_files_cached(str(script)))
+    _STATEMENTS.save()
+    return files
 
 
 def _library_files(script):
