@@ -41,7 +41,8 @@ class Timing:
         return {"median": self.median, "q25": low, "q75": high, "samples": len(self.samples)}
 
 
-def interleaved(cases: dict[str, Callable[[], object]], rounds: int, budget: float | None = None) -> dict:
+def interleaved(cases: dict[str, Callable[[], object]], rounds: int, budget: float | None = None,
+                results: dict | None = None) -> dict:
     """Time every case once per round, in an order rotated from round to round.
 
     Parameters
@@ -51,6 +52,9 @@ def interleaved(cases: dict[str, Callable[[], object]], rounds: int, budget: flo
         Rounds (samples per case), >= 1.
     budget : float, optional
         Stop after the round in which the total time exceeds this (at least three rounds).
+    results : dict, optional
+        If given, filled with name -> the value the case's last timed call returned, so that what a
+        benchmark reports of a case (its error, its torque) is what was timed, not a second call.
 
     Returns
     -------
@@ -63,8 +67,10 @@ def interleaved(cases: dict[str, Callable[[], object]], rounds: int, budget: flo
         shift = k % len(names)
         for name in names[shift:] + names[:shift]:
             start = time.perf_counter()
-            cases[name]()
+            value = cases[name]()
             elapsed = time.perf_counter() - start
+            if results is not None:
+                results[name] = value
             samples[name].append(elapsed)
             spent += elapsed
         if budget is not None and spent > budget and k >= 2:

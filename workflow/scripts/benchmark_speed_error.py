@@ -6,8 +6,9 @@ machine slows every case alike; each case gets its median and interquartile spre
 ratio to the complete weak form at the paper's N = 145 is the median of the per-round ratios.
 Errors are measured against the Abel-Fredholm solution at twice its default nodes: |T* error|,
 |omega error| (complete and Abel-Fredholm) and the max interface-traction error on 201 equispaced r
-(series tractions T* r - sum c_n lam_n J1(lam_n r), eq. 26).  The mpmath reference of the truncated
-system is timed once per precision (it takes seconds).  Writes JSON (with the machine) and macros.
+(series tractions T* r - sum c_n lam_n J1(lam_n r), eq. 26), of the result of each case's last timed
+call (no case is solved again for its errors).  The mpmath reference of the truncated system is timed
+once per precision (it takes seconds).  Writes JSON (with the machine) and macros.
 """
 
 import argparse
@@ -41,11 +42,12 @@ def benchmark(b, n_terms_list, nodes_list, rounds, r_grid):
     q_exact = exact.interface_traction(r_grid)
     cases = {(m, n): _series_solver(b, m, n) for m in ("published", "complete") for n in n_terms_list}
     cases.update({("fast", n): (lambda n=n: solve_abel_fredholm(b, n)) for n in nodes_list})
-    timings = interleaved({f"{m}:{n}": run for (m, n), run in cases.items()}, rounds, budget=60.0)
+    solved = {}  # the errors are those of the timed calls' results (deterministic: a re-solve gives the same)
+    timings = interleaved({f"{m}:{n}": run for (m, n), run in cases.items()}, rounds, budget=60.0, results=solved)
     base = timings[f"{BASELINE[0]}:{BASELINE[1]}"]
     rows = []
-    for (method, n), run in cases.items():
-        s = run()
+    for method, n in cases:
+        s = solved[f"{method}:{n}"]
         timing = timings[f"{method}:{n}"]
         if method == "fast":
             traction = s.interface_traction(r_grid)
@@ -72,10 +74,10 @@ def reference_sweep(b, digits_list, n_terms, exact_torque, exact_omega):
     """
     rows = []
     for digits in digits_list:
-        solutions = []  # the timed call's result is the one reported (it takes seconds: not solved twice)
-        timing = interleaved({"reference": lambda d=digits, out=solutions: out.append(
-            reference.solve_reference(repr(b), "complete", n_terms, d))}, 1)["reference"]
-        solution = solutions[-1]
+        solved = {}  # the timed call's result is the one reported (it takes seconds: not solved twice)
+        timing = interleaved({"reference": lambda d=digits: reference.solve_reference(repr(b), "complete", n_terms, d)},
+                             1, results=solved)["reference"]
+        solution = solved["reference"]
         rows.append({"method": "reference", "resolution": digits, "n_terms": n_terms, "seconds": timing.median,
                      "timing": timing.as_dict(), "torque_error": abs(float(solution.torque) - exact_torque),
                      "omega_error": abs(float(solution.rigid_rotation) - exact_omega), "traction_error": None})
@@ -97,8 +99,9 @@ def targets(rounds, n_radii=49, n_curve=200, n_torques=17):
                              3, budget=30.0)
     solve(torque=1.2)  # the first inverse solve of a process may build tables; the steady state is timed here
     torques = np.linspace(1.01, 1.33, n_torques)
-    inverse = interleaved({f"{t:.2f}": (lambda t=t: solve(torque=t)) for t in torques}, rounds)
-    errors = [abs(solve_abel_fredholm(solve(torque=t).stick_radius).torque - t) for t in torques]
+    inverted = {}
+    inverse = interleaved({f"{t:.2f}": (lambda t=t: solve(torque=t)) for t in torques}, rounds, results=inverted)
+    errors = [abs(solve_abel_fredholm(inverted[f"{t:.2f}"].stick_radius).torque - t) for t in torques]
     return {
         "per_radius": {"median": float(np.median(medians)), "max": float(medians.max()),
                        "worst_b": float(radii[int(np.argmax(medians))])},

@@ -14,6 +14,10 @@ from pathlib import Path
 # nbformat validates with jsonschema, which imports the optional rfc3987-syntax when installed and that
 # compiles 38 grammars on import (a second of CPU per notebook) for "iri" formats no notebook schema uses
 sys.modules.setdefault("rfc3987_syntax", None)
+# jupytext imports its Jupyter-server contents managers (and with them jupyter_server) when it can; only
+# its reader is used here, and it stands without them (jupytext catches the ImportError)
+for _manager in ("jupytext.sync_contentsmanager", "jupytext.async_contentsmanager"):
+    sys.modules.setdefault(_manager, None)
 
 import jupytext  # noqa: E402 (after the line above)
 import nbclient  # noqa: E402
