@@ -148,6 +148,20 @@ def test_cylinder_kernel_scalar_point_as_broadcast():
     np.testing.assert_array_equal(row, full)  # the same elementwise operations: equal to the last bit
 
 
+@pytest.mark.parametrize("order", [1, 2])
+def test_series_sum_grid_tables_against_direct_sum(order):
+    """On a tensor grid the Bessel and decay factors come from tables of the distinct r and z; against the sum
+    written out point by point (every term, tol=0)."""
+    lam = bessel_j2_zeros(300)
+    coefficients = 1.0 / lam**2
+    r, z = np.meshgrid(np.linspace(0.0, 1.0, 11), np.array([1e-3, 0.01, 0.2, 1.0]))
+    grid = fields.series_sum(order, lam, coefficients, r, z, tol=0.0).ravel()
+    terms = special.jv(order, np.outer(r.ravel(), lam)) * np.exp(-np.outer(z.ravel(), lam)) * coefficients
+    # the same terms summed in another order (BLAS kernels differ with the number of rows): N EPS sum |terms|
+    assert_close(grid, terms.sum(axis=1), "summation order: N EPS sum |terms|",
+                 atol=lam.size * EPS * np.abs(terms).sum(axis=1))
+
+
 def test_kernel_against_dini_series():
     """(K4): sum_n J1 J1 / (lam h) = G_hs + G_c - 4 BETA r rho at sample points."""
     lam = bessel_j2_zeros(100_000)
