@@ -123,6 +123,47 @@ def test_kernel_reproduces_dini_eigenfunctions(r):
                  atol=2.0**-30 * 21 / 30)
 
 
+def test_i1_excess_against_mpmath():
+    """exp(-xi) (I1(x) - x/2) of ``kernels._i1_excess_scaled`` on both branches (series below 1/2, Cephes i1e above)
+    against 30-digit mpmath, with x broadcast against xi as ``cylinder_kernel`` does."""
+    xi = np.array([0.3, 1.0, 7.0, 40.0, 300.0])
+    fraction = np.array([[0.0], [0.01], [0.4], [0.9], [0.999]])
+    x = fraction * xi
+    got = kernels._i1_excess_scaled(x, xi)
+    with mpmath.workdps(30):
+        expected = np.array([[float(mpmath.exp(-mpmath.mpf(c)) * (mpmath.besseli(1, mpmath.mpf(a)) - mpmath.mpf(a) / 2))
+                              for a, c in zip(row, xi, strict=True)] for row in x])
+        size = np.array([[float(mpmath.exp(-mpmath.mpf(c)) * (mpmath.besseli(1, mpmath.mpf(a)) + mpmath.mpf(a) / 2))
+                          for a, c in zip(row, xi, strict=True)] for row in x])
+    # relative to the size of the terms I1 + x/2 (the subtraction cancels): i1e's peak relative error 2e-15 is a
+    # measured sample (Cephes' own test), not a bound: ten times it; exp of the rounded difference x - xi:
+    # |x - xi| EPS / 2; the product and the subtraction: 4 EPS.  (The series below 1/2: its rounding, a few EPS.)
+    assert_close(got, expected, "10 x i1e's sampled peak 2e-15 + |x - xi| EPS / 2 + 4 EPS, relative to I1 + x/2",
+                 atol=(2e-14 + (np.abs(x - xi) / 2 + 4) * EPS) * size)
+
+
+def test_cylinder_kernel_scalar_point_as_broadcast():
+    """A scalar r against a vector rho (one row of Bessel factors, broadcast) gives the numbers of r given per rho."""
+    rho = np.linspace(0.0, 0.95, 40)
+    row = kernels.cylinder_kernel(0.4, rho)
+    full = kernels.cylinder_kernel(np.full(rho.shape, 0.4), rho)
+    np.testing.assert_array_equal(row, full)  # the same elementwise operations: equal to the last bit
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_series_sum_grid_tables_against_direct_sum(order):
+    """On a tensor grid the Bessel and decay factors come from tables of the distinct r and z; against the sum
+    written out point by point (every term, tol=0)."""
+    lam = bessel_j2_zeros(300)
+    coefficients = 1.0 / lam**2
+    r, z = np.meshgrid(np.linspace(0.0, 1.0, 11), np.array([1e-3, 0.01, 0.2, 1.0]))
+    grid = fields.series_sum(order, lam, coefficients, r, z, tol=0.0).ravel()
+    terms = special.jv(order, np.outer(r.ravel(), lam)) * np.exp(-np.outer(z.ravel(), lam)) * coefficients
+    # the same terms summed in another order (BLAS kernels differ with the number of rows): N EPS sum |terms|
+    assert_close(grid, terms.sum(axis=1), "summation order: N EPS sum |terms|",
+                 atol=lam.size * EPS * np.abs(terms).sum(axis=1))
+
+
 def test_kernel_against_dini_series():
     """(K4): sum_n J1 J1 / (lam h) = G_hs + G_c - 4 BETA r rho at sample points."""
     lam = bessel_j2_zeros(100_000)

@@ -189,6 +189,50 @@ def test_condition_numbers_small_n():
     assert exact / 3 <= est <= exact * 1.0000001
 
 
+def test_condition_numbers_shared_factorisation_against_own_factorisations():
+    """One LU per N (bordered for the complete form, scaled for the equilibrated ones) against dgecon on each
+    matrix's own LU and against the exact 1-norm condition number."""
+    from torsional_contact.solvers.equilibration import equilibrate, reciprocal_condition
+
+    n = 300
+    rows = crosscheck.condition_numbers([n], 0.6)
+    lam = bessel_j2_zeros(n)
+    for method in ("published", "complete"):
+        matrix, _, _ = formulations.assemble(method, lam, 0.6)
+        row = next(r for r in rows if r["method"] == method)
+        for key, m in (("raw", matrix), ("equilibrated", equilibrate(matrix))):
+            own = 1.0 / reciprocal_condition(m)
+            exact = np.linalg.cond(m, 1)
+            # the same estimator (Hager-Higham, dgecon) on the same inverse through different factors: the solves
+            # differ by kappa EPS relative each, and the estimate is the norm of one solve: 1e3 kappa EPS
+            assert_close(row[key], own, "the same estimator through other factors: 1e3 kappa EPS",
+                         rtol=1e3 * exact * EPS)
+            # an estimate is the norm of a computed column of A^-1 (a lower bound, to rounding) and at worst a
+            # small factor below (3 covers LAPACK's estimator on these matrices, as for the own factorisation)
+            assert exact / 3 <= row[key] <= exact * (1 + 1e3 * exact * EPS)
+
+
+@pytest.mark.parametrize("b", [0.3, 0.9])
+def test_truncation_errors_one_factorisation(b):
+    """Both weak forms at the converged N from one LU: the published solve is solve_series' own; the complete one
+    (block elimination) agrees with solve_series' own dense solve to the rounding bound of a stable solve."""
+    n = 600
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", formulations.UnphysicalResultWarning)
+        rows = {r["method"]: r for r in crosscheck.truncation_errors(b, 145, n)}
+        own = {m: formulations.solve_series(b, m, n) for m in ("published", "complete")}
+    assert rows["published"]["torque_converged"] == own["published"].torque  # the same operations
+    kappa_eps = rows["complete"]["converged_rounding_bound"]  # EPS / rcond of the equilibrated published matrix
+    # two backward-stable solves of one system differ by the forward error bound kappa x growth x EPS, growth
+    # as ``crosscheck.GROWTH_DIGITS``; the complete system's condition is the published one's to a few %
+    bound = 10**crosscheck.GROWTH_DIGITS * kappa_eps
+    assert_within(abs(rows["complete"]["torque_converged"] - own["complete"].torque) / own["complete"].torque,
+                  bound, "two stable solves: 10^GROWTH_DIGITS EPS / rcond")
+    assert_within(abs(rows["complete"]["rigid_rotation_converged"] - own["complete"].rigid_rotation)
+                  / abs(own["complete"].rigid_rotation), bound / abs(own["complete"].rigid_rotation),
+                  "two stable solves, omega against |x| ~ 1: 10^GROWTH_DIGITS EPS / rcond")
+
+
 def test_write_json_atomic(tmp_path):
     sols = [reference.solve_reference(0.6, "complete", 10, 25)]
     path = tmp_path / "ref.json"

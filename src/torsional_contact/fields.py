@@ -110,17 +110,31 @@ def series_sum(order, eigenvalues, coefficients, r, z, tol=DEFAULT_TOLERANCE):
     out = np.zeros(r.shape)
     # Group points by the number of terms (rounded up to a block) to stay vectorised.
     k_block = np.minimum(-(-k // _BLOCK) * _BLOCK, eigenvalues.size)
+    bessel_rows = _shared_rows(r, eigenvalues[: int(k_block.max(initial=0))], bessel)
+    decay_rows = _shared_rows(z, eigenvalues[: int(k_block.max(initial=0))], lambda x: np.exp(-x))
     for n_sum in np.unique(k_block):
         if n_sum == 0:
             continue
-        lam = eigenvalues[:n_sum]
         group = np.nonzero(k_block == n_sum)[0]
         chunk = max(1, _CHUNK_ENTRIES // int(n_sum))
         for start in range(0, group.size, chunk):
             idx = group[start : start + chunk]
-            terms = bessel(np.outer(r[idx], lam)) * np.exp(-np.outer(z[idx], lam))
+            terms = bessel_rows(idx, n_sum) * decay_rows(idx, n_sum)
             out[idx] = terms @ coefficients[:n_sum]
     return out.reshape(shape)
+
+
+def _shared_rows(coordinate, eigenvalues, function):
+    """rows(idx, n) = function(outer(coordinate[idx], eigenvalues[:n])), each distinct coordinate evaluated once.
+
+    Points on a grid share their r (or z) values: the table of the distinct values is computed once
+    when it fits in ``_CHUNK_ENTRIES`` (the same numbers as evaluating per point), else per call.
+    """
+    distinct, inverse = np.unique(coordinate, return_inverse=True)
+    if distinct.size == coordinate.size or distinct.size * eigenvalues.size > _CHUNK_ENTRIES:
+        return lambda idx, n: function(np.outer(coordinate[idx], eigenvalues[:n]))
+    table = function(np.outer(distinct, eigenvalues))
+    return lambda idx, n: table[inverse[idx], :n]
 
 
 def required_terms(z_min: float, tolerance: float) -> float:

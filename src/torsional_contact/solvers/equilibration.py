@@ -9,10 +9,11 @@ from __future__ import annotations
 import numpy as np
 from scipy import linalg
 
-__all__ = ["equilibrate", "equilibrated_solve", "reciprocal_condition"]
+__all__ = ["equilibrate", "equilibrated_solve", "reciprocal_condition", "scalings"]
 
 
-def _scalings(matrix):
+def scalings(matrix):
+    """(row, col): the row then column scale factors to unit max-norm that ``equilibrate`` applies."""
     row = 1.0 / np.max(np.abs(matrix), axis=1)
     col = 1.0 / np.max(np.abs(matrix * row[:, None]), axis=0)
     return row, col
@@ -20,7 +21,7 @@ def _scalings(matrix):
 
 def equilibrate(matrix):
     """Row then column scaling of ``matrix`` to unit max-norm (what ``equilibrated_solve`` factors)."""
-    row, col = _scalings(matrix)
+    row, col = scalings(matrix)
     return matrix * row[:, None] * col[None, :]
 
 
@@ -34,7 +35,7 @@ def reciprocal_condition(matrix) -> float:
 
 def equilibrated_solve(matrix, rhs):
     """LU solve after row and column scaling to unit max-norm; returns (x, rcond of the scaled matrix)."""
-    row, col = _scalings(matrix)
+    row, col = scalings(matrix)
     scaled = matrix * row[:, None] * col[None, :]
     lu, piv = linalg.lu_factor(scaled, check_finite=True)
     anorm = np.max(np.sum(np.abs(scaled), axis=0))

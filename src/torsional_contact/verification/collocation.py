@@ -33,6 +33,7 @@ xi-quadrature (``kernels.cylinder_kernel``, I1-based, not the sinh-based kernels
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -66,8 +67,17 @@ class DirectSolution:
         return out
 
 
-def _gauss(a, b, n=_PANEL):
+@functools.cache
+def _gauss_legendre(n):
+    """Gauss-Legendre nodes and weights on [-1, 1] (computed once per n; read-only)."""
     x, w = legendre.leggauss(n)
+    x.flags.writeable = False
+    w.flags.writeable = False
+    return x, w
+
+
+def _gauss(a, b, n=_PANEL):
+    x, w = _gauss_legendre(n)
     return 0.5 * (b - a) * (x + 1.0) + a, 0.5 * (b - a) * w
 
 

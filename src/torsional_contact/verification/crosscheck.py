@@ -10,15 +10,16 @@ import math
 import warnings
 
 import numpy as np
+from scipy import linalg
 
-from ..diagnostics import AccuracyWarning, UnphysicalResultWarning
-from ..solvers.equilibration import equilibrate, reciprocal_condition
-from ..solvers.weak_form import WEAK_FORMS, solve_series
+from ..diagnostics import AccuracyWarning, IllConditioningWarning, UnphysicalResultWarning
+from ..solvers.equilibration import equilibrate, scalings
+from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
 
-__all__ = ["rounding_error", "condition_numbers", "truncation_error", "GROWTH_DIGITS"]
+__all__ = ["rounding_error", "condition_numbers", "truncation_error", "truncation_errors", "GROWTH_DIGITS"]
 
 #: Digits a backward-stable dense solve may lose beyond log10 of its condition number.  LU with partial pivoting
 #: bounds the forward error by kappa x 3n x growth x EPS (|dA| <= gamma_3n |L||U|; growth = || |L||U| || / ||A||,
@@ -26,6 +27,7 @@ __all__ = ["rounding_error", "condition_numbers", "truncation_error", "GROWTH_DI
 #: ~3 here).  For the cross-check's n <= 580 the worst case is ~3.8 digits; rounding errors accumulate like
 #: sqrt(3n) in practice (~1.6 digits): 3 digits.
 GROWTH_DIGITS = 3
+EPS = float(np.finfo(float).eps)
 
 
 def _rel(a, b):
@@ -83,35 +85,96 @@ def rounding_error(reference: ReferenceSolution) -> dict:
     }
 
 
+def _row_order(pivots) -> np.ndarray:
+    """perm with (P A)[i] = A[perm[i]] for LAPACK's sequential row interchanges ``pivots`` (getrf's ipiv)."""
+    perm = np.arange(pivots.size)
+    for i, p in enumerate(pivots):
+        perm[i], perm[p] = perm[p], perm[i]
+    return perm
+
+
+def _bordered_factors(lu, pivots, column, row, corner):
+    """LU factors (getrf layout) of [[A, column], [row, corner]] from those of A (P A = L U).
+
+    diag(P, 1) [[A, c], [r, d]] = [[L, 0], [l, 1]] [[U, u], [0, d - l.u]] with L u = P c and l U = r:
+    two triangular solves, O(n^2).  The pivoting is A's (the border row is not a pivot candidate); a valid
+    factorisation all the same, which is all LAPACK's condition estimator needs.
+    """
+    n = lu.shape[0]
+    u = linalg.solve_triangular(lu, column[_row_order(pivots)], lower=True, unit_diagonal=True)
+    l_row = linalg.solve_triangular(lu, row, trans="T", lower=False)
+    out = np.empty((n + 1, n + 1))
+    out[:n, :n] = lu
+    out[:n, n] = u
+    out[n, :n] = l_row
+    out[n, n] = corner - l_row @ u
+    return out, np.append(pivots, n)
+
+
+def _scaled_factors(lu, pivots, row, col):
+    """LU factors of R A C (R, C diagonal) from those of A: P R A C = (R_p L R_p^-1)(R_p U C), R_p = P R P^T.
+
+    Same interchanges; O(n^2) instead of a new O(n^3) factorisation.
+    """
+    r_p = row[_row_order(pivots)]
+    lower = np.tril(lu, -1) * (r_p[:, None] / r_p[None, :])
+    upper = np.triu(lu) * (r_p[:, None] * col[None, :])
+    return lower + upper
+
+
+def _rcond(factors, matrix) -> float:
+    """LAPACK's estimate (dgecon) of 1 / (||A||_1 ||A^-1||_1) from LU factors of ``matrix`` (getrf layout)."""
+    anorm = np.max(np.sum(np.abs(matrix), axis=0))
+    rcond, info = linalg.lapack.dgecon(factors, anorm, norm="1")
+    if info != 0:
+        raise RuntimeError(f"dgecon failed (info={info})")
+    return float(rcond)
+
+
 def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORMS, progress: bool = False) -> list:
     """1-norm condition numbers of the double-precision system vs N (raw and equilibrated).
 
-    kappa_1 = ||A||_1 ||A^-1||_1 estimated by LAPACK dgecon from the LU factors
-    (within a small factor of the exact value).  O(N^3) per entry: N = 5000 takes
-    several seconds per matrix on one core.
+    kappa_1 = ||A||_1 ||A^-1||_1 with ||A^-1||_1 estimated by LAPACK dgecon (Hager-Higham, within a small
+    factor of the exact value, usually exact) from LU factors.  One O(N^3) factorisation per N serves the
+    four matrices: the published A is factorised, the complete system is A bordered by one row and column
+    (``_bordered_factors``) and the equilibrated ones are the same factors scaled by the row and column
+    scalings (``_scaled_factors``); each estimate is of the same operator inverse as from its own
+    factorisation, to rounding (relative kappa EPS < 1e-10 here, far below the estimator's own factor).
 
     Returns
     -------
     list of dict(n_terms, method, raw, equilibrated)
     """
+    unknown = set(methods) - set(WEAK_FORMS)
+    if unknown:
+        raise ValueError(f"methods must be among {WEAK_FORMS}, got {sorted(unknown)}")
     out = []
-    jobs = [(n, m) for n in n_terms_list for m in methods]
+    sizes = [int(n) for n in n_terms_list]
     if progress:
         from tqdm import tqdm
 
-        jobs = tqdm(jobs, desc="condition numbers")
-    for n, m in jobs:
-        lam = bessel_j2_zeros(int(n))
-        matrix, _, _ = assemble_double(m, lam, stick_radius)
-        out.append(
-            {
-                "n_terms": int(n),
-                "method": m,
-                "stick_radius": stick_radius,
-                "raw": 1.0 / reciprocal_condition(matrix),
-                "equilibrated": 1.0 / reciprocal_condition(equilibrate(matrix)),
-            }
-        )
+        sizes = tqdm(sizes, desc="condition numbers")
+    for n in sizes:
+        lam = bessel_j2_zeros(n)
+        complete, _, _ = assemble_double("complete", lam, stick_radius)
+        published = complete[:n, :n]  # the complete system borders the published one
+        lu, pivots = linalg.lu_factor(published, check_finite=True)
+        factors = {"published": (lu, pivots, published)}
+        if "complete" in methods:
+            lu_c, pivots_c = _bordered_factors(lu, pivots, complete[:n, n], complete[n, :n], complete[n, n])
+            factors["complete"] = (lu_c, pivots_c, complete)
+        for m in methods:
+            lu_m, pivots_m, matrix = factors[m]
+            row, col = scalings(matrix)
+            out.append(
+                {
+                    "n_terms": n,
+                    "method": m,
+                    "stick_radius": stick_radius,
+                    "raw": 1.0 / _rcond(lu_m, matrix),
+                    "equilibrated": 1.0 / _rcond(_scaled_factors(lu_m, pivots_m, row, col), equilibrate(matrix)),
+                }
+            )
     return out
 
 
@@ -136,3 +199,69 @@ def truncation_error(stick_radius: float, method: str, n_terms: int, n_terms_con
         "rigid_rotation": a.rigid_rotation if method == "complete" else None,
         "rigid_rotation_converged": b.rigid_rotation if method == "complete" else None,
     }
+
+
+def _converged_solutions(stick_radius: float, n_terms: int) -> dict:
+    """(T*, omega) of both weak forms at N = ``n_terms`` from one factorisation: method -> (torque, omega), and
+    ``rounding_bound`` = EPS / rcond of the equilibrated A (the relative rounding both routes are subject to).
+
+    The published system is solved exactly as ``solve_series`` solves it (row and column equilibration,
+    LU with partial pivoting, closure (v)); the complete system [[A, s], [t, d]] borders it by the
+    rigid-rotation unknown and is solved with the same factors by block elimination,
+    omega = (f_n - t.A^-1 f) / (d - t.A^-1 s), c = A^-1 f - omega A^-1 s, a backward-stable route while the
+    Schur complement d - t.A^-1 s is not small against |d| + |t||A^-1 s| (checked: ``AccuracyWarning``).  The two
+    routes to the complete solution agree to kappa EPS (kappa = 1 / rcond of the equilibrated A).
+    """
+    b = float(stick_radius)
+    lam = bessel_j2_zeros(int(n_terms))
+    n = lam.size
+    complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
+    published = complete[:n, :n]
+    row, col = scalings(published)
+    lu, pivots = linalg.lu_factor(published * row[:, None] * col[None, :], check_finite=True)
+    rcond = _rcond(lu, published * row[:, None] * col[None, :])
+    if rcond < RCOND_WARN:
+        warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
+                      f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=2)
+    rhs = np.column_stack([rhs_torque[:n], rhs_constant[:n]])
+    x = linalg.lu_solve((lu, pivots), rhs * row[:, None]) * col[:, None]  # as equilibrated_solve
+    border = linalg.lu_solve((lu, pivots), complete[:n, n] * row) * col
+    out = {"published": (closure_torque("traction", "published", lam, b, x[:, 0], x[:, 1]), math.nan),
+           "rounding_bound": EPS / rcond}
+    t, d = complete[n, :n], complete[n, n]
+    schur = d - t @ border
+    if abs(schur) < 1e3 * EPS * (abs(d) + np.abs(t) @ np.abs(border)):
+        warnings.warn(f"block elimination of the complete system at stick_radius={b:.6g}, n_terms={n}: the Schur "
+                      f"complement {schur:.3g} is at rounding level", AccuracyWarning, stacklevel=2)
+    omega = (np.array([rhs_torque[n], rhs_constant[n]]) - t @ x) / schur
+    coefficients = x - border[:, None] * omega[None, :]
+    solution = np.vstack([coefficients, omega[None, :]])
+    torque = closure_torque("traction", "complete", lam, b, solution[:, 0], solution[:, 1])
+    out["complete"] = (torque, float(solution[n, 1] + torque * solution[n, 0]))
+    return out
+
+
+def truncation_errors(stick_radius: float, n_terms: int, n_terms_converged: int, methods=WEAK_FORMS) -> list:
+    """``truncation_error`` for each of ``methods`` at one b, the converged systems solved with one factorisation
+    (``_converged_solutions``): the published T* is computed as ``solve_series`` computes it, the complete one by
+    block elimination (agreeing with ``solve_series`` to kappa EPS, ~1e-11 relative at N = 4000)."""
+    converged = _converged_solutions(stick_radius, n_terms_converged)
+    out = []
+    for method in methods:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UnphysicalResultWarning)
+            a = solve_series(stick_radius, method, n_terms)
+        torque, omega = converged[method]
+        out.append({
+            "stick_radius": stick_radius,
+            "method": method,
+            "n_terms": n_terms,
+            "n_terms_converged": n_terms_converged,
+            "torque": a.torque,
+            "torque_converged": torque,
+            "torque_rel_change": abs(a.torque - torque) / torque,
+            "rigid_rotation": a.rigid_rotation if method == "complete" else None,
+            "rigid_rotation_converged": omega if method == "complete" else None,
+            "converged_rounding_bound": converged["rounding_bound"],
+        })
+    return out

@@ -291,7 +291,8 @@ def solve_rotation_fields(graded: GradedMesh, degree: int, loads) -> list[Rotati
         raise ValueError(f"degree must be one of {sorted(ELEMENTS)}, got {degree!r}")
     mesh, b = graded.mesh, graded.stick_radius
     basis = Basis(mesh, ELEMENTS[degree](), intorder=2 * degree + 3)
-    stiffness = BilinearForm(lambda u, v, w: w.x[0] ** 3 * dot(grad(u), grad(v))).assemble(basis).tocsr()
+    weight = basis.global_coordinates().value[0] ** 3  # r^3 at the quadrature points, once for all basis pairs
+    stiffness = BilinearForm(lambda u, v, w: w.weight * dot(grad(u), grad(v))).assemble(basis, weight=weight).tocsr()
     stick = mesh.facets_satisfying(lambda x: (x[1] == 0.0) & (x[0] < b), boundaries_only=True)
     slip = mesh.facets_satisfying(lambda x: (x[1] == 0.0) & (x[0] > b), boundaries_only=True)
     top = mesh.facets_satisfying(lambda x: x[1] == graded.truncation, boundaries_only=True)

@@ -55,20 +55,28 @@ SMALL_RADII = (0.05, 0.1, 0.2, 0.3, 0.4)
 WEIGHTS = (0.5, 1.0, 2.0)
 
 
+@functools.lru_cache(maxsize=64)
 def _system(b, method, n, weight=1.0):
-    """(lam, x_torque, x_constant) of the weak form with the stick residual weighted by ``weight``."""
+    """(lam, x_torque, x_constant) of the weak form with the stick residual weighted by ``weight``.
+
+    Cached per process (read-only arrays): the survey meets the same system several times (the field radius
+    among the survey radii, weight 1 among the weights, small radii among the survey radii).
+    """
     lam = bessel_j2_zeros(n)
     if weight == 1.0:
         matrix, rhs_t, rhs_c = assemble(method, lam, b)
     else:
         matrix, rhs_t, rhs_c = weighted_system(b, method, lam, weight)
     x, _ = equilibrated_solve(matrix, np.column_stack([rhs_t, rhs_c]))
-    return lam, x[:, 0], x[:, 1]
+    out = lam.copy(), x[:, 0].copy(), x[:, 1].copy()
+    for array in out:
+        array.flags.writeable = False
+    return out
 
 
 def _fields(b, n, method="published"):
     """Per closure: T*, alpha (u/r on the stick disc), min slip just outside b, max annulus traction."""
-    lam, xt, xc = _system(b, method, n)
+    lam, xt, xc = _system(b, method, n, 1.0)  # the key _torques uses
     r_stick = np.linspace(0.1, 0.5, 9) * b / FIELD_RADIUS
     r_edge = np.linspace(b + 0.005, b + 0.05, 10)
     r_slip = np.linspace(0.7, 0.95, 11)
