@@ -60,6 +60,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import flint
+import numpy as np
 
 from ..diagnostics import AccuracyWarning
 from .arbitrary_precision import gauss_legendre, mp_to_arb, parse_decimal, working_digits
@@ -227,8 +228,8 @@ class AbelFredholmState:
     chebyshev : tuple of arb
         Coefficients of G = g + L in T_k(2 t^2/b^2 - 1) (for F6); computed on first use.
     seconds : float
-        Wall-clock time of the solve (T*, omega and the Nystrom interpolant; not the series
-        of the profiles, which are computed when a profile is first asked for).
+        Wall-clock time of the solve (T*, omega; not the xi-profiles of the Nystrom interpolant
+        nor the series of the profiles, which are computed when a profile is first asked for).
     """
 
     stick_radius: object
@@ -242,15 +243,47 @@ class AbelFredholmState:
     density: tuple = field(repr=False)
     seconds: float = 0.0
     _xi: tuple = field(repr=False, default=())
-    _profile_a: tuple = field(repr=False, default=())
-    _profile_y: tuple = field(repr=False, default=())
+    _interpolant: tuple = field(repr=False, default=())
     _tail_start: float = field(repr=False, default=0.0)
+
+    # -- the xi-profiles of the interpolant (only the profiles need them: node sweeps skip them) ---------
+    @cached_property
+    def _profiles(self) -> tuple:
+        """(a_k, y_k): bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail, from the solve's A(xi_k t_j)."""
+        a_entries, scale, xi, side_full, side_excess, column = self._interpolant
+        n, n_xi = self.n_nodes, len(xi)
+        with working_digits(self.work_digits):
+            zero = flint.arb(0)
+            two_over_pi = 2 / flint.arb.pi()
+            weights_g = [c * g for c, g in zip(column, self.density, strict=True)]
+            sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
+                             * _column(weights_g))
+            sum_c = sum((c * tj for c, tj in zip(weights_g, self.nodes, strict=True)), zero)
+            profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
+                              for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
+            profile_y = tuple(s * x * (two_over_pi * sa + e)
+                              for s, x, sa, e in zip(scale, xi, sum_a, side_excess, strict=True))
+        return profile_a, profile_y
+
+    @property
+    def _profile_a(self) -> tuple:
+        return self._profiles[0]
+
+    @property
+    def _profile_y(self) -> tuple:
+        return self._profiles[1]
 
     # -- the Nystrom interpolant --------------------------------------------------------
     def _bracket(self, t_points) -> list:
-        """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7)."""
-        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel")
-        part_a = _entries(a_matrix * _column(self._profile_a))
+        """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7).
+
+        Each row's xi-sum stops where its rest is below t 2^-(prec + ROW_GUARD_BITS), and a rigorous
+        bound on the rest is added to the ball (``_row_truncation``).
+        """
+        lengths, rests = _row_truncation(t_points, self._xi, self._profile_a)
+        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths)
+        part_a = [value + flint.arb(0, rest) if rest is not None else value
+                  for value, rest in zip(_entries(a_matrix * _column(self._profile_a)), rests, strict=True)]
         total_y = sum(self._profile_y, flint.arb(0))
         two_over_pi = 2 / flint.arb.pi()
         return [  # the J_k(1 + t) half of the tail is below exp(-X) < 2^-prec (kernels_mp.spinning_tail)
@@ -392,6 +425,53 @@ class AbelFredholmState:
                     for s, r in zip(sums, radii, strict=True)]
 
 
+#: The profiles' rows of A(xi t) stop where the rest of their xi-sum is below t 2^-(prec + ROW_GUARD_BITS).
+ROW_GUARD_BITS = 8
+
+
+def _row_truncation(t_points, xi, coefficients) -> tuple:
+    """Where the sums S(t) = sum_k A(xi_k t) c_k of rows 0 < t <= T may stop, and rigorous bounds on the rest.
+
+    The coefficients c_k of the Nystrom interpolant decay like exp(-(2 - b) xi) (its xi-profiles
+    carry K2/I2 ~ pi exp(-2 xi)), so a row t needs xi only up to about (prec ln 2)/(2 - b - t),
+    not to the end of the quadrature, which the slowest rate 1 - b (E_1 at t = 1) sets.  With
+    A(x) = sinh x - x <= exp(x)/2 (x >= 0) and xi ascending, for every K
+
+        |sum_(k >= K) A(xi_k t) c_k| <= exp(-xi_K (T - t)) Q_K,   Q_K = sum_(k >= K) |c_k| exp(xi_k T)/2,
+
+    T = max t.  Per row: the smallest K whose bound (floats, from the logarithms of Q_K) is below
+    t 2^-(prec + ROW_GUARD_BITS), then the bound at that K in ball arithmetic (an upper bound at
+    64 bits).  Returns (lengths, rests): K per row and the bound (arb) or None where K = len(xi).
+    """
+    n_xi = len(xi)
+    xi_float = np.array([float(x) for x in xi])
+    if n_xi == 0 or np.any(np.diff(xi_float) < 0):
+        raise ValueError("xi must be a non-empty ascending sequence")
+    prec = flint.ctx.prec
+    flint.ctx.prec = 64
+    try:
+        top = max(t.upper() for t in t_points)  # T >= every t (rigorous)
+        suffix = [flint.arb(0)] * (n_xi + 1)
+        for k in range(n_xi - 1, -1, -1):
+            suffix[k] = suffix[k + 1] + coefficients[k].abs_upper() * (xi[k] * top).exp() / 2
+        log_suffix = np.array([float(q.log().upper()) if q > 0 else -math.inf for q in suffix[:n_xi]])
+        lengths, rests = [], []
+        for t in t_points:
+            gap = float((top - t).lower())  # T - t >= gap >= 0
+            target = math.log(float(t.lower())) - (prec + ROW_GUARD_BITS) * math.log(2.0)
+            below = np.nonzero(log_suffix - xi_float * max(gap, 0.0) <= target)[0]
+            if len(below) == 0:
+                lengths.append(n_xi)
+                rests.append(None)
+                continue
+            k = int(below[0])
+            lengths.append(k)
+            rests.append(suffix[k] * (-xi[k] * (top - t).nonnegative_part()).exp())
+    finally:
+        flint.ctx.prec = prec
+    return lengths, rests
+
+
 def _graded_panels(length: float, left_scale: float, right_scale: float, exact_length):
     """Panels [lo, hi] (arb) of [0, length], halving toward 0 down to ``left_scale`` and
     toward ``length`` down to ``right_scale`` (geometric meshes for near end singularities)."""
@@ -531,18 +611,11 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
                                                      zero)
         rotation = omega_big - torque_rotation(work_digits) * torque
 
-        # xi-profiles of the interpolant: bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail
-        weights_g = [c * g for c, g in zip(column, density, strict=True)]
-        sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
-                         * _column(weights_g))
-        sum_c = sum((c * tj for c, tj in zip(weights_g, t, strict=True)), zero)
-        profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
-                          for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
-        profile_y = tuple(s * x * (two_over_pi * sa + e)
-                          for s, x, sa, e in zip(scale, xi, sum_a, side_excess, strict=True))
+        # the xi-profiles of the interpolant are formed from these on first use (AbelFredholmState._profiles)
+        interpolant = (a_entries, scale, xi, side_full, side_excess, column)
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-        seconds=time.perf_counter() - start, _xi=xi, _profile_a=profile_a, _profile_y=profile_y,
+        seconds=time.perf_counter() - start, _xi=xi, _interpolant=interpolant,
         _tail_start=tail_start,
     )
