@@ -315,9 +315,9 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
 
 @pytest.mark.parametrize("b", ["0.5", "0.98"])
 def test_truncated_profile_rows_bound_what_they_drop(b):
-    """The profiles' rows of A(xi t) stop early (``nystrom_mp._row_truncation``): the terms they drop,
+    """The profiles' rows of A(xi t) stop early (``kernels_mp.xi_sum_truncation``): the terms they drop,
     summed directly in ball arithmetic, are within the bound added to the ball, which is below the target
-    t 2^-(prec + ROW_GUARD_BITS) (no tolerance: both are rigorous); the truncated sums overlap the full ones;
+    t 2^-(prec + TRUNCATION_GUARD_BITS) (no tolerance: both are rigorous); the truncated sums overlap the full ones;
     a row well inside the stick disc stops early (at b = 0.98 below a tenth of the xi-range)."""
     state = solve_state(b, nodes_for_digits(float(b), 20), 25)
     xi, coefficients = state._xi, state._profile_a
@@ -325,10 +325,10 @@ def test_truncated_profile_rows_bound_what_they_drop(b):
         radius = state.stick_radius
         t_points = [radius * flint.arb(f) for f in ("0.001", "0.3", "0.7", "1")] + [
             radius + (1 - radius) * flint.arb(f) for f in ("0.5", "1")]
-        lengths, rests = nystrom_mp._row_truncation(t_points, xi, coefficients)
+        lengths, rests = kernels_mp.xi_sum_truncation(t_points, xi, coefficients)
         full = special_mp.sinh_excess_matrix(t_points, xi, method="cancel")
         short = special_mp.sinh_excess_matrix(t_points, xi, method="cancel", lengths=lengths)
-        target = 2.0 ** (-flint.ctx.prec - nystrom_mp.ROW_GUARD_BITS)
+        target = 2.0 ** (-flint.ctx.prec - kernels_mp.TRUNCATION_GUARD_BITS)
         for i, (t, k, rest) in enumerate(zip(t_points, lengths, rests, strict=True)):
             dropped = sum((full[i, j] * coefficients[j] for j in range(k, len(xi))), flint.arb(0))
             if rest is None:
@@ -343,7 +343,7 @@ def test_truncated_profile_rows_bound_what_they_drop(b):
         if b == "0.98":  # the xi-range is set by the rate 1 - b of E_1 at t = 1; a row at t = 0.3 b decays at 1.7 - b
             assert float(xi[lengths[1]]) < float(xi[-1]) / 10
         with pytest.raises(ValueError, match="ascending"):
-            nystrom_mp._row_truncation(t_points, list(reversed(xi)), coefficients)
+            kernels_mp.xi_sum_truncation(t_points, list(reversed(xi)), coefficients)
         with pytest.raises(ValueError, match="lengths"):
             special_mp.sinh_excess_matrix(t_points, xi, lengths=[len(xi) + 1] * len(t_points))
 

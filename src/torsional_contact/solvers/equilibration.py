@@ -65,13 +65,15 @@ def reciprocal_condition(matrix) -> float:
 def equilibrated_solve(matrix, rhs):
     """LU solve after row and column scaling to unit max-norm; returns (x, rcond of the scaled matrix).
 
-    The scaled matrix is formed in one array and factored in place of LAPACK's own copy (no other
-    temporaries of the matrix's size: at N = 4640 each is 170 MB).
+    The scaled matrix is formed in one array; besides it, only the Fortran-ordered copy that LAPACK
+    factors has the matrix's size (at N = 4640 each is 170 MB); the numbers are those of the plain
+    expressions (``tests/test_equilibration.py``).  The finiteness check of ``lu_factor`` is made on the
+    column sums (a nan or an inf in the scaled matrix makes its column's sum one; its entries are <= 1).
     """
     matrix = np.ascontiguousarray(matrix, dtype=float)
     scaled, row, col = _scaled(matrix)
     column_sums = _column_abs_sums(scaled)
-    if not np.all(np.isfinite(column_sums)):  # what check_finite would test: a nan or inf makes its column's sum so
+    if not np.all(np.isfinite(column_sums)):
         raise ValueError("matrix must be finite (it contains an inf or a nan)")
     anorm = np.max(column_sums)
     lu, piv = linalg.lu_factor(scaled, overwrite_a=True, check_finite=False)

@@ -42,17 +42,19 @@ precision).  Measured against direct rows at 41-54 working digits, b = 0.02 to 0
 series agrees to the direct evaluation's own rounding (about 10^3 ulp).  G for (F6) stays
 sampled by rows (``chebyshev_points`` of them), its transform consistent with the rounded
 nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
-``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small half; the
+``sinh_excess_matrix(method="cancel")``, each row stopped where the rest of its xi-sum is below
+t 2^-(prec + 8) with a rigorous bound on that rest added to the ball (``kernels_mp.xi_sum_truncation``: a row
+t needs xi up to about prec ln 2 / (2 - b - t), the quadrature runs to prec ln 2 / (1 - b)), and
+the tail without its exp(-X)-small half; the
 solve keeps the Taylor series and the full tail, so the rounding of T* and omega (printed
 beyond the working precision in node sweeps) does not depend on these shortcuts.  The
-per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``_xi_layer``):
+per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``kernels_mp.xi_layer``):
 node sweeps and several radii in one process share them.
 """
 
 from __future__ import annotations
 
 import cmath
-import functools
 import math
 import time
 import warnings
@@ -60,20 +62,19 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import flint
-import numpy as np
 
 from ..diagnostics import AccuracyWarning
 from .arbitrary_precision import gauss_legendre, mp_to_arb, parse_decimal, working_digits
 from .kernels_mp import (
     FIRST_PANEL,
     WIDTH_DECAYS,
-    load_profiles,
     panel_nodes,
     spinning_tail,
     torque_rotation,
-    xi_quadrature,
+    xi_layer,
+    xi_sum_truncation,
 )
-from .special_mp import bessel_ratio, sinh_excess_matrix
+from .special_mp import sinh_excess_matrix
 
 __all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "interface_points", "solve_state"]
 
@@ -277,10 +278,10 @@ class AbelFredholmState:
     def _bracket(self, t_points) -> list:
         """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7).
 
-        Each row's xi-sum stops where its rest is below t 2^-(prec + ROW_GUARD_BITS), and a rigorous
-        bound on the rest is added to the ball (``_row_truncation``).
+        Each row's xi-sum stops where its rest is below t 2^-(prec + TRUNCATION_GUARD_BITS), and a
+        rigorous bound on the rest is added to the ball (``kernels_mp.xi_sum_truncation``).
         """
-        lengths, rests = _row_truncation(t_points, self._xi, self._profile_a)
+        lengths, rests = xi_sum_truncation(t_points, self._xi, self._profile_a)
         a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths)
         part_a = [value + flint.arb(0, rest) if rest is not None else value
                   for value, rest in zip(_entries(a_matrix * _column(self._profile_a)), rests, strict=True)]
@@ -425,53 +426,6 @@ class AbelFredholmState:
                     for s, r in zip(sums, radii, strict=True)]
 
 
-#: The profiles' rows of A(xi t) stop where the rest of their xi-sum is below t 2^-(prec + ROW_GUARD_BITS).
-ROW_GUARD_BITS = 8
-
-
-def _row_truncation(t_points, xi, coefficients) -> tuple:
-    """Where the sums S(t) = sum_k A(xi_k t) c_k of rows 0 < t <= T may stop, and rigorous bounds on the rest.
-
-    The coefficients c_k of the Nystrom interpolant decay like exp(-(2 - b) xi) (its xi-profiles
-    carry K2/I2 ~ pi exp(-2 xi)), so a row t needs xi only up to about (prec ln 2)/(2 - b - t),
-    not to the end of the quadrature, which the slowest rate 1 - b (E_1 at t = 1) sets.  With
-    A(x) = sinh x - x <= exp(x)/2 (x >= 0) and xi ascending, for every K
-
-        |sum_(k >= K) A(xi_k t) c_k| <= exp(-xi_K (T - t)) Q_K,   Q_K = sum_(k >= K) |c_k| exp(xi_k T)/2,
-
-    T = max t.  Per row: the smallest K whose bound (floats, from the logarithms of Q_K) is below
-    t 2^-(prec + ROW_GUARD_BITS), then the bound at that K in ball arithmetic (an upper bound at
-    64 bits).  Returns (lengths, rests): K per row and the bound (arb) or None where K = len(xi).
-    """
-    n_xi = len(xi)
-    xi_float = np.array([float(x) for x in xi])
-    if n_xi == 0 or np.any(np.diff(xi_float) < 0):
-        raise ValueError("xi must be a non-empty ascending sequence")
-    prec = flint.ctx.prec
-    flint.ctx.prec = 64
-    try:
-        top = max(t.upper() for t in t_points)  # T >= every t (rigorous)
-        suffix = [flint.arb(0)] * (n_xi + 1)
-        for k in range(n_xi - 1, -1, -1):
-            suffix[k] = suffix[k + 1] + coefficients[k].abs_upper() * (xi[k] * top).exp() / 2
-        log_suffix = np.array([float(q.log().upper()) if q > 0 else -math.inf for q in suffix[:n_xi]])
-        lengths, rests = [], []
-        for t in t_points:
-            gap = float((top - t).lower())  # T - t >= gap >= 0
-            target = math.log(float(t.lower())) - (prec + ROW_GUARD_BITS) * math.log(2.0)
-            below = np.nonzero(log_suffix - xi_float * max(gap, 0.0) <= target)[0]
-            if len(below) == 0:
-                lengths.append(n_xi)
-                rests.append(None)
-                continue
-            k = int(below[0])
-            lengths.append(k)
-            rests.append(suffix[k] * (-xi[k] * (top - t).nonnegative_part()).exp())
-    finally:
-        flint.ctx.prec = prec
-    return lengths, rests
-
-
 def _graded_panels(length: float, left_scale: float, right_scale: float, exact_length):
     """Panels [lo, hi] (arb) of [0, length], halving toward 0 down to ``left_scale`` and
     toward ``length`` down to ``right_scale`` (geometric meshes for near end singularities)."""
@@ -487,61 +441,6 @@ def _graded_panels(length: float, left_scale: float, right_scale: float, exact_l
     edges = sorted(edges)
     edges = [flint.arb(e) for e in edges] + [exact_length]
     return list(zip(edges[:-1], edges[1:], strict=True))
-
-
-#: Per-node xi-functions (rho = K2/I2 and the c = 1 load profiles), keyed by precision and node:
-#: the xi-quadratures of different stick radii share their first panels.
-_NODE_CACHE: dict = {}
-_NODE_CACHE_LIMIT = 200_000
-
-
-def _per_node(kind: str, function, xi) -> list:
-    """``function(nodes)`` (elementwise, deterministic) for the nodes ``xi``, computed once per node and precision."""
-    if len(_NODE_CACHE) > _NODE_CACHE_LIMIT:
-        _NODE_CACHE.clear()
-    prec = flint.ctx.prec
-    keys = [(kind, prec, *(int(v) for v in x.man_exp())) for x in xi]
-    missing = [k for k, key in enumerate(keys) if key not in _NODE_CACHE]
-    if missing:
-        for k, value in zip(missing, function([xi[k] for k in missing]), strict=True):
-            _NODE_CACHE[keys[k]] = value
-    return [_NODE_CACHE[key] for key in keys]
-
-
-@dataclass(frozen=True)
-class _XiLayer:
-    """What a solve needs of the xi-quadrature, independent of the Nystrom nodes (``_xi_layer``)."""
-
-    xi: tuple
-    scale: tuple
-    side_full: tuple
-    side_excess: tuple
-    tail_start: float
-
-
-@functools.lru_cache(maxsize=8)
-def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
-    b = flint.arb(b_key)
-    quadrature = xi_quadrature(float(1 - b), work_digits, first_panel, width_decays)
-    xi = quadrature.nodes
-    scale = [w * r for w, r in zip(quadrature.weights, _per_node("ratio", bessel_ratio, xi), strict=True)]
-    below = quadrature.n_below
-    profiles_1 = _per_node("load_1", lambda nodes: list(zip(*load_profiles(flint.arb(1), nodes), strict=True)),
-                           xi[:below])
-    full_1, excess_1 = [f for f, _ in profiles_1], [e for _, e in profiles_1]
-    full_b, excess_b = load_profiles(b, xi)
-    zero = flint.arb(0)
-    side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
-    side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
-    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
-
-
-def _xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
-    """xi-nodes, weights times K2/I2, and the load profiles F(xi)/xi^2 - F(b xi)/xi^2 (and the
-    excess forms) of one (b, working precision, layout): shared by the solves of a node sweep."""
-    man, exp = b.mid().man_exp()
-    return _xi_layer_cached((int(man), int(exp)), flint.ctx.prec, int(work_digits), float(first_panel),
-                            float(width_decays))
 
 
 def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: float = FIRST_PANEL,
@@ -571,7 +470,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         theta = [pi / 4 * (x + 1) for x in theta_x]
         t = [b * th.cos() for th in theta]
         wt = [b * th.sin() * pi / 4 * w for th, w in zip(theta, theta_w, strict=True)]
-        layer = _xi_layer(b, work_digits, first_panel, width_decays)
+        layer = xi_layer(b, work_digits, first_panel, width_decays)
         xi, scale, side_full, side_excess = layer.xi, layer.scale, layer.side_full, layer.side_excess
         zero = flint.arb(0)
 
