@@ -248,6 +248,37 @@ def test_write_json_atomic(tmp_path):
                       "25 printed digits: half a unit of the 25th of T* ~ 1.2", exact=True)
 
 
+@pytest.mark.skipif(arbitrary_precision.flint is None, reason="the Arb assembly needs python-flint")
+@pytest.mark.parametrize("method", ["published", "complete"])
+@pytest.mark.parametrize("b", ["0.1", "0.9"])  # a small stick disc and a thin slip annulus
+def test_arb_assembly_agrees_with_mpmath_assembly(method, b):
+    digits = 40
+    with warnings.catch_warnings():  # N = 60 does not resolve b = 0.9 and the printed form leaves [1, 4/3]:
+        warnings.simplefilter("ignore")  # both paths solve the same truncated system, which is the point
+        arb = reference.solve_reference(b, method, 60, digits, assembly="arb")
+        mp = reference.solve_reference(b, method, 60, digits, assembly="mpmath")
+    with mpmath.workdps(digits + 10):
+        # both are the same system at digits + 20 working digits, less its conditioning (~4 digits),
+        # then rounded to ``digits``: they differ by at most the two roundings, 10^-digits relative
+        tol = mpmath.mpf(10) ** -digits
+        assert_within(abs(arb.torque - mp.torque), tol * abs(mp.torque), "two roundings to the digits")
+        for x, y in zip(arb.amplitudes, mp.amplitudes, strict=True):
+            assert_within(abs(x - y), tol * abs(y), "two roundings to the digits")
+        if method == "complete":
+            assert_within(abs(arb.rigid_rotation - mp.rigid_rotation), tol * abs(mp.rigid_rotation),
+                          "two roundings to the digits")
+    # the Arb ball covers the assembly's rounding as well as the solve's: still far below 10^-digits
+    assert arb.solve_bound is not None and arb.solve_bound < mpmath.mpf(10) ** -(digits + 5)
+
+
+def test_bad_assembly():
+    with pytest.raises(ValueError, match="assembly"):
+        reference.solve_reference(0.5, "complete", 10, 20, assembly="numpy")
+    if arbitrary_precision.flint is not None:
+        with pytest.raises(ValueError, match="assembly"):
+            reference.solve_reference(0.5, "complete", 10, 20, assembly="arb", form="struve")
+
+
 def test_bad_input():
     with pytest.raises(ValueError, match="stick_radius"):
         reference.solve_reference(1.0, "complete", 10, 20)

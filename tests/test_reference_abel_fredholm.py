@@ -313,6 +313,41 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
         special_mp.sinh_excess_matrix(points, xi, method="taylor")
 
 
+@pytest.mark.parametrize("b", ["0.5", "0.98"])
+def test_truncated_profile_rows_bound_what_they_drop(b):
+    """The profiles' rows of A(xi t) stop early (``kernels_mp.xi_sum_truncation``): the terms they drop,
+    summed directly in ball arithmetic, are within the bound added to the ball, which is below the target
+    t 2^-(prec + TRUNCATION_GUARD_BITS) (no tolerance: both are rigorous); the truncated sums overlap the full ones;
+    a row well inside the stick disc stops early (at b = 0.98 below a tenth of the xi-range)."""
+    state = solve_state(b, nodes_for_digits(float(b), 20), 25)
+    xi, coefficients = state._xi, state._profile_a
+    with working_digits(25):
+        radius = state.stick_radius
+        t_points = [radius * flint.arb(f) for f in ("0.001", "0.3", "0.7", "1")] + [
+            radius + (1 - radius) * flint.arb(f) for f in ("0.5", "1")]
+        lengths, rests = kernels_mp.xi_sum_truncation(t_points, xi, coefficients)
+        full = special_mp.sinh_excess_matrix(t_points, xi, method="cancel")
+        short = special_mp.sinh_excess_matrix(t_points, xi, method="cancel", lengths=lengths)
+        target = 2.0 ** (-flint.ctx.prec - kernels_mp.TRUNCATION_GUARD_BITS)
+        for i, (t, k, rest) in enumerate(zip(t_points, lengths, rests, strict=True)):
+            dropped = sum((full[i, j] * coefficients[j] for j in range(k, len(xi))), flint.arb(0))
+            if rest is None:
+                assert k == len(xi)
+                continue
+            assert abs(dropped).upper() <= rest.upper()
+            assert float(rest.upper()) <= float(t) * target
+            kept = sum((short[i, j] * coefficients[j] for j in range(len(xi))), flint.arb(0))
+            whole = sum((full[i, j] * coefficients[j] for j in range(len(xi))), flint.arb(0))
+            assert (kept + flint.arb(0, rest)).overlaps(whole)
+        assert lengths[1] < len(xi)
+        if b == "0.98":  # the xi-range is set by the rate 1 - b of E_1 at t = 1; a row at t = 0.3 b decays at 1.7 - b
+            assert float(xi[lengths[1]]) < float(xi[-1]) / 10
+        with pytest.raises(ValueError, match="ascending"):
+            kernels_mp.xi_sum_truncation(t_points, list(reversed(xi)), coefficients)
+        with pytest.raises(ValueError, match="lengths"):
+            special_mp.sinh_excess_matrix(t_points, xi, lengths=[len(xi) + 1] * len(t_points))
+
+
 def test_several_radii_in_one_job_give_the_files_of_single_jobs(tmp_path):
     """The workflow script with two stick radii (the higher working precision first, and a node
     sweep) writes the same files as one process per radius: the caches shared between radii

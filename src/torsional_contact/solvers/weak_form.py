@@ -212,7 +212,8 @@ def assemble(method: str, lam: np.ndarray, b: float):
     ``matrix @ x = T* rhs_torque + rhs_constant`` with x = (c_1..c_N[, omega]).
     """
     lam = np.asarray(lam, dtype=float)
-    matrix = integrals.lommel_matrix(lam, b) * (lam - 1.0)[None, :]
+    matrix = integrals.lommel_matrix(lam, b)
+    matrix *= (lam - 1.0)[None, :]
     matrix[np.diag_indices_from(matrix)] += integrals.dini_norm(lam)
     rhs_torque = integrals.load_integral_linear(lam, b)
     rhs_constant = -integrals.load_integral_constant(lam, b)

@@ -164,12 +164,17 @@ def lommel_matrix(lam, b):
     lam = np.asarray(lam, dtype=float)
     x = lam * b
     j0b, j1b = special.j0(x), special.j1(x)
-    diff = lam[:, None] ** 2 - lam[None, :] ** 2
-    np.fill_diagonal(diff, 1.0)
-    upper_minus_lower = -b * (
-        lam[None, :] * j1b[:, None] * j0b[None, :] - lam[:, None] * j0b[:, None] * j1b[None, :]
-    )
-    matrix = upper_minus_lower / diff
+    # -b [lam_n J1(lam_m b) J0(lam_n b) - lam_m J0(lam_m b) J1(lam_n b)] / (lam_m^2 - lam_n^2), formed in two
+    # arrays of the matrix's size (the same operations, in the same order, as the plain expression)
+    matrix = lam[None, :] * j1b[:, None]
+    matrix *= j0b[None, :]
+    work = np.multiply((lam[:, None] * j0b[:, None]), j1b[None, :])
+    matrix -= work
+    matrix *= -b
+    np.subtract(lam[:, None] ** 2, lam[None, :] ** 2, out=work)
+    np.fill_diagonal(work, 1.0)
+    matrix /= work
+    del work
     with np.errstate(divide="ignore", invalid="ignore"):
         cross = np.where(x > 0, 2.0 * j0b * j1b / np.where(x > 0, x, 1.0), 1.0)
     diagonal = 0.5 * special.j1(lam) ** 2 - 0.5 * b * b * (j0b**2 + j1b**2 - cross)

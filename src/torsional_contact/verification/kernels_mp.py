@@ -55,6 +55,7 @@ import warnings
 from dataclasses import dataclass
 
 import flint
+import numpy as np
 
 from ..diagnostics import AccuracyWarning
 from .arbitrary_precision import gauss_legendre, precision_bits
@@ -83,6 +84,9 @@ __all__ = [
     "torque_rotation",
     "abel_kernel",
     "load_transform",
+    "xi_layer",
+    "xi_sum_truncation",
+    "TRUNCATION_GUARD_BITS",
 ]
 
 #: Length of the first xi-panel, on which xi = FIRST_PANEL * u^q (``first_panel_power``).
@@ -295,3 +299,108 @@ def load_transform(t_points, c, quadrature: XiQuadrature):
             value += spinning_tail(t, quadrature.asymptotic_start)
         out.append(value)
     return out
+
+
+# --------------------------------------------------------------------------- shared by the solves
+
+
+#: Per-node xi-functions (rho = K2/I2 and the c = 1 load profiles), keyed by precision and node:
+#: the xi-quadratures of different stick radii share their first panels.
+_NODE_CACHE: dict = {}
+_NODE_CACHE_LIMIT = 200_000
+
+
+def _per_node(kind: str, function, xi) -> list:
+    """``function(nodes)`` (elementwise, deterministic) for the nodes ``xi``, computed once per node and precision."""
+    if len(_NODE_CACHE) > _NODE_CACHE_LIMIT:
+        _NODE_CACHE.clear()
+    prec = flint.ctx.prec
+    keys = [(kind, prec, *(int(v) for v in x.man_exp())) for x in xi]
+    missing = [k for k, key in enumerate(keys) if key not in _NODE_CACHE]
+    if missing:
+        for k, value in zip(missing, function([xi[k] for k in missing]), strict=True):
+            _NODE_CACHE[keys[k]] = value
+    return [_NODE_CACHE[key] for key in keys]
+
+
+@dataclass(frozen=True)
+class _XiLayer:
+    """What a solve needs of the xi-quadrature, independent of the Nystrom nodes (``xi_layer``)."""
+
+    xi: tuple
+    scale: tuple
+    side_full: tuple
+    side_excess: tuple
+    tail_start: float
+
+
+@functools.lru_cache(maxsize=8)
+def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
+    b = flint.arb(b_key)
+    quadrature = xi_quadrature(float(1 - b), work_digits, first_panel, width_decays)
+    xi = quadrature.nodes
+    scale = [w * r for w, r in zip(quadrature.weights, _per_node("ratio", bessel_ratio, xi), strict=True)]
+    below = quadrature.n_below
+    profiles_1 = _per_node("load_1", lambda nodes: list(zip(*load_profiles(flint.arb(1), nodes), strict=True)),
+                           xi[:below])
+    full_1, excess_1 = [f for f, _ in profiles_1], [e for _, e in profiles_1]
+    full_b, excess_b = load_profiles(b, xi)
+    zero = flint.arb(0)
+    side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
+    side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
+    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
+
+
+def xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
+    """xi-nodes, weights times K2/I2, and the load profiles F(xi)/xi^2 - F(b xi)/xi^2 (and the
+    excess forms) of one (b, working precision, layout): shared by the solves of a node sweep."""
+    man, exp = b.mid().man_exp()
+    return _xi_layer_cached((int(man), int(exp)), flint.ctx.prec, int(work_digits), float(first_panel),
+                            float(width_decays))
+
+
+#: Rows of xi-sums stop where their rest is below t 2^-(prec + TRUNCATION_GUARD_BITS) (``xi_sum_truncation``).
+TRUNCATION_GUARD_BITS = 8
+
+
+def xi_sum_truncation(t_points, xi, coefficients) -> tuple:
+    """Where the sums S(t) = sum_k A(xi_k t) c_k of rows 0 < t <= T may stop, and rigorous bounds on the rest.
+
+    The coefficients c_k of the Nystrom interpolant decay like exp(-(2 - b) xi) (its xi-profiles
+    carry K2/I2 ~ pi exp(-2 xi)), so a row t needs xi only up to about (prec ln 2)/(2 - b - t),
+    not to the end of the quadrature, which the slowest rate 1 - b (E_1 at t = 1) sets.  With
+    A(x) = sinh x - x <= exp(x)/2 (x >= 0) and xi ascending, for every K
+
+        |sum_(k >= K) A(xi_k t) c_k| <= exp(-xi_K (T - t)) Q_K,   Q_K = sum_(k >= K) |c_k| exp(xi_k T)/2,
+
+    T = max t.  Per row: the smallest K whose bound (floats, from the logarithms of Q_K) is below
+    t 2^-(prec + TRUNCATION_GUARD_BITS), then the bound at that K in ball arithmetic (an upper bound at
+    64 bits).  Returns (lengths, rests): K per row and the bound (arb) or None where K = len(xi).
+    """
+    n_xi = len(xi)
+    xi_float = np.array([float(x) for x in xi])
+    if n_xi == 0 or np.any(np.diff(xi_float) < 0):
+        raise ValueError("xi must be a non-empty ascending sequence")
+    prec = flint.ctx.prec
+    flint.ctx.prec = 64
+    try:
+        top = max(t.upper() for t in t_points)  # T >= every t (rigorous)
+        suffix = [flint.arb(0)] * (n_xi + 1)
+        for k in range(n_xi - 1, -1, -1):
+            suffix[k] = suffix[k + 1] + coefficients[k].abs_upper() * (xi[k] * top).exp() / 2
+        log_suffix = np.array([float(q.log().upper()) if q > 0 else -math.inf for q in suffix[:n_xi]])
+        lengths, rests = [], []
+        for t in t_points:
+            gap = float((top - t).lower())  # T - t >= gap >= 0
+            target = math.log(float(t.lower())) - (prec + TRUNCATION_GUARD_BITS) * math.log(2.0)
+            below = np.nonzero(log_suffix - xi_float * max(gap, 0.0) <= target)[0]
+            if len(below) == 0:
+                lengths.append(n_xi)
+                rests.append(None)
+                continue
+            k = int(below[0])
+            lengths.append(k)
+            rests.append(suffix[k] * (-xi[k] * (top - t).nonnegative_part()).exp())
+    finally:
+        flint.ctx.prec = prec
+    return lengths, rests

@@ -42,17 +42,19 @@ precision).  Measured against direct rows at 41-54 working digits, b = 0.02 to 0
 series agrees to the direct evaluation's own rounding (about 10^3 ulp).  G for (F6) stays
 sampled by rows (``chebyshev_points`` of them), its transform consistent with the rounded
 nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
-``sinh_excess_matrix(method="cancel")`` and the tail without its exp(-X)-small half; the
+``sinh_excess_matrix(method="cancel")``, each row stopped where the rest of its xi-sum is below
+t 2^-(prec + 8) with a rigorous bound on that rest added to the ball (``kernels_mp.xi_sum_truncation``: a row
+t needs xi up to about prec ln 2 / (2 - b - t), the quadrature runs to prec ln 2 / (1 - b)), and
+the tail without its exp(-X)-small half; the
 solve keeps the Taylor series and the full tail, so the rounding of T* and omega (printed
 beyond the working precision in node sweeps) does not depend on these shortcuts.  The
-per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``_xi_layer``):
+per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``kernels_mp.xi_layer``):
 node sweeps and several radii in one process share them.
 """
 
 from __future__ import annotations
 
 import cmath
-import functools
 import math
 import time
 import warnings
@@ -66,13 +68,13 @@ from .arbitrary_precision import gauss_legendre, mp_to_arb, parse_decimal, worki
 from .kernels_mp import (
     FIRST_PANEL,
     WIDTH_DECAYS,
-    load_profiles,
     panel_nodes,
     spinning_tail,
     torque_rotation,
-    xi_quadrature,
+    xi_layer,
+    xi_sum_truncation,
 )
-from .special_mp import bessel_ratio, sinh_excess_matrix
+from .special_mp import sinh_excess_matrix
 
 __all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "interface_points", "solve_state"]
 
@@ -227,8 +229,8 @@ class AbelFredholmState:
     chebyshev : tuple of arb
         Coefficients of G = g + L in T_k(2 t^2/b^2 - 1) (for F6); computed on first use.
     seconds : float
-        Wall-clock time of the solve (T*, omega and the Nystrom interpolant; not the series
-        of the profiles, which are computed when a profile is first asked for).
+        Wall-clock time of the solve (T*, omega; not the xi-profiles of the Nystrom interpolant
+        nor the series of the profiles, which are computed when a profile is first asked for).
     """
 
     stick_radius: object
@@ -242,15 +244,47 @@ class AbelFredholmState:
     density: tuple = field(repr=False)
     seconds: float = 0.0
     _xi: tuple = field(repr=False, default=())
-    _profile_a: tuple = field(repr=False, default=())
-    _profile_y: tuple = field(repr=False, default=())
+    _interpolant: tuple = field(repr=False, default=())
     _tail_start: float = field(repr=False, default=0.0)
+
+    # -- the xi-profiles of the interpolant (only the profiles need them: node sweeps skip them) ---------
+    @cached_property
+    def _profiles(self) -> tuple:
+        """(a_k, y_k): bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail, from the solve's A(xi_k t_j)."""
+        a_entries, scale, xi, side_full, side_excess, column = self._interpolant
+        n, n_xi = self.n_nodes, len(xi)
+        with working_digits(self.work_digits):
+            zero = flint.arb(0)
+            two_over_pi = 2 / flint.arb.pi()
+            weights_g = [c * g for c, g in zip(column, self.density, strict=True)]
+            sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
+                             * _column(weights_g))
+            sum_c = sum((c * tj for c, tj in zip(weights_g, self.nodes, strict=True)), zero)
+            profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
+                              for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
+            profile_y = tuple(s * x * (two_over_pi * sa + e)
+                              for s, x, sa, e in zip(scale, xi, sum_a, side_excess, strict=True))
+        return profile_a, profile_y
+
+    @property
+    def _profile_a(self) -> tuple:
+        return self._profiles[0]
+
+    @property
+    def _profile_y(self) -> tuple:
+        return self._profiles[1]
 
     # -- the Nystrom interpolant --------------------------------------------------------
     def _bracket(self, t_points) -> list:
-        """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7)."""
-        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel")
-        part_a = _entries(a_matrix * _column(self._profile_a))
+        """R(t) + (2/pi) int_0^b s g(s) P(t, s) ds for 0 < t <= 1 (arb list), see (F2), (F7).
+
+        Each row's xi-sum stops where its rest is below t 2^-(prec + TRUNCATION_GUARD_BITS), and a
+        rigorous bound on the rest is added to the ball (``kernels_mp.xi_sum_truncation``).
+        """
+        lengths, rests = xi_sum_truncation(t_points, self._xi, self._profile_a)
+        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths)
+        part_a = [value + flint.arb(0, rest) if rest is not None else value
+                  for value, rest in zip(_entries(a_matrix * _column(self._profile_a)), rests, strict=True)]
         total_y = sum(self._profile_y, flint.arb(0))
         two_over_pi = 2 / flint.arb.pi()
         return [  # the J_k(1 + t) half of the tail is below exp(-X) < 2^-prec (kernels_mp.spinning_tail)
@@ -409,61 +443,6 @@ def _graded_panels(length: float, left_scale: float, right_scale: float, exact_l
     return list(zip(edges[:-1], edges[1:], strict=True))
 
 
-#: Per-node xi-functions (rho = K2/I2 and the c = 1 load profiles), keyed by precision and node:
-#: the xi-quadratures of different stick radii share their first panels.
-_NODE_CACHE: dict = {}
-_NODE_CACHE_LIMIT = 200_000
-
-
-def _per_node(kind: str, function, xi) -> list:
-    """``function(nodes)`` (elementwise, deterministic) for the nodes ``xi``, computed once per node and precision."""
-    if len(_NODE_CACHE) > _NODE_CACHE_LIMIT:
-        _NODE_CACHE.clear()
-    prec = flint.ctx.prec
-    keys = [(kind, prec, *(int(v) for v in x.man_exp())) for x in xi]
-    missing = [k for k, key in enumerate(keys) if key not in _NODE_CACHE]
-    if missing:
-        for k, value in zip(missing, function([xi[k] for k in missing]), strict=True):
-            _NODE_CACHE[keys[k]] = value
-    return [_NODE_CACHE[key] for key in keys]
-
-
-@dataclass(frozen=True)
-class _XiLayer:
-    """What a solve needs of the xi-quadrature, independent of the Nystrom nodes (``_xi_layer``)."""
-
-    xi: tuple
-    scale: tuple
-    side_full: tuple
-    side_excess: tuple
-    tail_start: float
-
-
-@functools.lru_cache(maxsize=8)
-def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
-    b = flint.arb(b_key)
-    quadrature = xi_quadrature(float(1 - b), work_digits, first_panel, width_decays)
-    xi = quadrature.nodes
-    scale = [w * r for w, r in zip(quadrature.weights, _per_node("ratio", bessel_ratio, xi), strict=True)]
-    below = quadrature.n_below
-    profiles_1 = _per_node("load_1", lambda nodes: list(zip(*load_profiles(flint.arb(1), nodes), strict=True)),
-                           xi[:below])
-    full_1, excess_1 = [f for f, _ in profiles_1], [e for _, e in profiles_1]
-    full_b, excess_b = load_profiles(b, xi)
-    zero = flint.arb(0)
-    side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
-    side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
-    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
-
-
-def _xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:
-    """xi-nodes, weights times K2/I2, and the load profiles F(xi)/xi^2 - F(b xi)/xi^2 (and the
-    excess forms) of one (b, working precision, layout): shared by the solves of a node sweep."""
-    man, exp = b.mid().man_exp()
-    return _xi_layer_cached((int(man), int(exp)), flint.ctx.prec, int(work_digits), float(first_panel),
-                            float(width_decays))
-
-
 def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: float = FIRST_PANEL,
                 width_decays: float = WIDTH_DECAYS) -> AbelFredholmState:
     """Solve (F2)-(F5) with ``n_nodes`` Nystrom nodes at ``work_digits`` working digits.
@@ -491,7 +470,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         theta = [pi / 4 * (x + 1) for x in theta_x]
         t = [b * th.cos() for th in theta]
         wt = [b * th.sin() * pi / 4 * w for th, w in zip(theta, theta_w, strict=True)]
-        layer = _xi_layer(b, work_digits, first_panel, width_decays)
+        layer = xi_layer(b, work_digits, first_panel, width_decays)
         xi, scale, side_full, side_excess = layer.xi, layer.scale, layer.side_full, layer.side_excess
         zero = flint.arb(0)
 
@@ -531,18 +510,11 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
                                                      zero)
         rotation = omega_big - torque_rotation(work_digits) * torque
 
-        # xi-profiles of the interpolant: bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail
-        weights_g = [c * g for c, g in zip(column, density, strict=True)]
-        sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
-                         * _column(weights_g))
-        sum_c = sum((c * tj for c, tj in zip(weights_g, t, strict=True)), zero)
-        profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
-                          for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
-        profile_y = tuple(s * x * (two_over_pi * sa + e)
-                          for s, x, sa, e in zip(scale, xi, sum_a, side_excess, strict=True))
+        # the xi-profiles of the interpolant are formed from these on first use (AbelFredholmState._profiles)
+        interpolant = (a_entries, scale, xi, side_full, side_excess, column)
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-        seconds=time.perf_counter() - start, _xi=xi, _profile_a=profile_a, _profile_y=profile_y,
+        seconds=time.perf_counter() - start, _xi=xi, _interpolant=interpolant,
         _tail_start=tail_start,
     )

@@ -52,8 +52,18 @@ from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
 from ..provenance import write_json
 from ..solvers.weak_form import WEAK_FORMS, resolution_limit, terms_to_resolve
+from . import weak_form_arb
+from .arbitrary_precision import (
+    FLINT,
+    arb_radius,
+    arb_to_mp,
+    mp_to_arb,
+    parse_decimal,
+    require_flint,
+    solve_linear,
+    working_digits,
+)
 from .arbitrary_precision import backend as default_backend
-from .arbitrary_precision import parse_decimal, solve_linear
 from .weak_form_mp import assemble, bessel_j2_zeros
 
 __all__ = [
@@ -165,6 +175,7 @@ def solve_reference(
     backend: str | None = None,
     form: str = "hyp1f2",
     progress: bool = False,
+    assembly: str | None = None,
 ) -> ReferenceSolution:
     """High-precision analogue of ``solvers.weak_form.solve_series`` (0 < b < 1).
 
@@ -184,7 +195,12 @@ def solve_reference(
     backend, form
         See ``solve_linear`` and ``load_integral_constant``.
     progress : bool
-        Show a tqdm progress bar over the rows of the Lommel matrix.
+        Show a tqdm progress bar over the rows of the Lommel matrix (mpmath assembly).
+    assembly : {"arb", "mpmath"}, optional
+        ``arb``: the system assembled and solved in Arb balls (``weak_form_arb``: the same printed
+        formulas in C, the bound covering the assembly's rounding too); ``mpmath``: assembled by
+        ``weak_form_mp`` and solved by ``backend``.  Default: arb when python-flint is importable,
+        the backend is flint and the form is hyp1f2; otherwise mpmath.
 
     Warns
     -----
@@ -218,13 +234,16 @@ def solve_reference(
         t0 = time.perf_counter()
         lam = bessel_j2_zeros(n_terms, work)
         seconds["zeros"] = time.perf_counter() - t0
-        t0 = time.perf_counter()
-        matrix, rhs_torque, rhs_constant = assemble(method, lam, b, form=form, progress=progress)
-        seconds["assembly"] = time.perf_counter() - t0
-        t0 = time.perf_counter()
-        (x_torque, x_constant), bound = solve_linear(matrix, [rhs_torque, rhs_constant], backend)
-        seconds["solve"] = time.perf_counter() - t0
-        weight = [x * mpmath.besselj(1, x * b) for x in lam]
+        if _assembly(assembly, backend, form) == "arb":
+            (x_torque, x_constant), bound, weight = _solve_arb(method, lam, b, work, seconds)
+        else:
+            t0 = time.perf_counter()
+            matrix, rhs_torque, rhs_constant = assemble(method, lam, b, form=form, progress=progress)
+            seconds["assembly"] = time.perf_counter() - t0
+            t0 = time.perf_counter()
+            (x_torque, x_constant), bound = solve_linear(matrix, [rhs_torque, rhs_constant], backend)
+            seconds["solve"] = time.perf_counter() - t0
+            weight = [x * mpmath.besselj(1, x * b) for x in lam]
         wk = mpmath.fsum(w * c for w, c in zip(weight, x_constant, strict=False))
         wl = mpmath.fsum(w * c for w, c in zip(weight, x_torque, strict=False))
         torque = (1 + wk) / (b - wl)
@@ -257,6 +276,44 @@ def solve_reference(
             solve_bound=bound,
             seconds=seconds,
         )
+
+
+def _assembly(assembly, backend, form) -> str:
+    """The assembly path of ``solve_reference`` (see its ``assembly`` parameter)."""
+    if assembly is None:
+        return "arb" if FLINT and (backend or default_backend()) == "flint" and form == "hyp1f2" else "mpmath"
+    name = validation.choice("assembly", assembly, ("arb", "mpmath"))
+    if name == "arb":
+        require_flint("assembly='arb'")
+        if form != "hyp1f2" or (backend or default_backend()) != "flint":
+            raise ValueError(f"assembly='arb' needs form='hyp1f2' and backend='flint', got {form!r}, {backend!r}")
+    return name
+
+
+def _solve_arb(method, lam, b, work: int, seconds: dict):
+    """(columns x_torque, x_constant as mpf), the solve's relative bound, lam_n J1(lam_n b) (mpf).
+
+    Computed at ``work`` digits in Arb, converted to mpf at the caller's mpmath precision.
+    """
+    with working_digits(work):
+        lam_arb, b_arb = [mp_to_arb(x) for x in lam], mp_to_arb(b)
+        t0 = time.perf_counter()
+        matrix, rhs = weak_form_arb.assemble(method, lam_arb, b_arb)
+        seconds["assembly"] = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        solution = matrix.solve(rhs)
+        seconds["solve"] = time.perf_counter() - t0
+        weight_arb = weak_form_arb.traction_weights(lam_arb, b_arb)
+    columns, bound = [], mpmath.mpf(0)
+    for j in range(2):
+        column = []
+        for i in range(solution.nrows()):
+            mid, rad = arb_to_mp(solution[i, j]), arb_radius(solution[i, j])
+            column.append(mid)
+            if mid != 0:
+                bound = max(bound, rad / abs(mid))
+        columns.append(column)
+    return columns, bound, [arb_to_mp(w) for w in weight_arb]
 
 
 def reference_set(stick_radii, methods=WEAK_FORMS, n_terms=145, digits=DEFAULT_DIGITS, progress=True, **kwargs):

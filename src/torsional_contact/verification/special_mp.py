@@ -178,7 +178,7 @@ def sinh_excess(x):
     return total
 
 
-def sinh_excess_matrix(points, xi, method: str = "series") -> flint.arb_mat:
+def sinh_excess_matrix(points, xi, method: str = "series", lengths=None) -> flint.arb_mat:
     """The matrix A(xi_k t_i) (len(points) x len(xi)) as an ``arb_mat``.
 
     ``method="series"``: the same values as ``sinh_excess`` element by element, bit for bit (the
@@ -189,16 +189,25 @@ def sinh_excess_matrix(points, xi, method: str = "series") -> flint.arb_mat:
     difference cancels (log2(6/x^2)) added to the working precision; equal to the series to
     within rounding and several times faster where most products are small (the profiles at
     small b).
+    ``lengths``: row i holds A(xi_k t_i) for k < lengths[i] only and exact zeros beyond (for
+    sums whose rest the caller bounds; default: every row full).
     """
     if method not in ("series", "cancel"):
         raise ValueError(f"method must be 'series' or 'cancel', got {method!r}")
+    points = list(points)
+    n_xi = len(xi)
+    if lengths is None:
+        lengths = [n_xi] * len(points)
+    elif len(lengths) != len(points) or any(not 0 <= k <= n_xi for k in lengths):
+        raise ValueError(f"lengths must give one count in [0, {n_xi}] per point")
     xi_float = [float(x) for x in xi]
     entries = []
+    zero = flint.arb(0)
     prec = flint.ctx.prec
     try:
-        for t in points:
+        for t, length in zip(points, lengths, strict=True):
             t_float = float(t)
-            for x, x_float in zip(xi, xi_float, strict=True):
+            for x, x_float in zip(xi[:length], xi_float[:length], strict=True):
                 product = x * t
                 size = x_float * t_float
                 if size >= 0.5:
@@ -211,9 +220,10 @@ def sinh_excess_matrix(points, xi, method: str = "series") -> flint.arb_mat:
                     value = exact.sinh() - exact
                     flint.ctx.prec = prec
                     entries.append(+value)
+            entries.extend([zero] * (n_xi - length))
     finally:
         flint.ctx.prec = prec
-    return flint.arb_mat(len(points), len(xi), entries)
+    return flint.arb_mat(len(points), n_xi, entries)
 
 
 def integral_x_i1(x):
