@@ -291,6 +291,54 @@ def test_profile_ends_are_where_the_likelihood_ratio_reaches_its_critical_value(
                       "the search's stop ROOT_TOLERANCE + the refits' tolerance", exact=True)
 
 
+@pytest.mark.parametrize("seed", [2024, 31337, 8])
+def test_profile_end_where_the_wald_half_width_says_nothing(seed, monkeypatch):
+    """Where the Wald half-width of a parameter exceeds a fifth of its scale (y = kappa C below its estimate, in
+    partial slip at 1e-5 rad of twist noise, for these seeds), the search starts at ``FIRST_STEP_CAP`` of the scale
+    and still ends where the refitted profile has LR = F(1, N - 4)."""
+    torque, twist = torque_controlled(RIG, 1.3 * RIG.slip_torque, cycles=2, samples_per_cycle=100)
+    s_t = 0.005 * np.ptp(torque)
+    torque, twist = noisy(torque, twist, s_t, 1e-5, np.random.default_rng(seed))
+    calls = {}
+    original_end, original_fit = profile.profile_end, profile.fit
+
+    def recording_fit(model, start, lower, upper, constraint=None, kappa_max=np.inf):
+        if constraint is not None:
+            calls["trace"].append(constraint.value)
+        return original_fit(model, start, lower, upper, constraint, kappa_max)
+
+    def recording_end(model, p_hat, s_min, scale2, kind, side, first_step, critical, lower, upper, kappa_max,
+                      *args, **kwargs):
+        calls["trace"] = []
+        end = original_end(model, p_hat, s_min, scale2, kind, side, first_step, critical, lower, upper, kappa_max,
+                           *args, **kwargs)
+        calls[(kind, side)] = (np.array(p_hat), s_min, scale2, first_step, critical, lower, upper, calls["trace"], end)
+        return end
+
+    monkeypatch.setattr(profile, "fit", recording_fit)
+    monkeypatch.setattr(loop_fit.profiles, "profile_end", recording_end)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", NoiseLimitedFitWarning)
+        fit_loop(torque, twist, radius=0.005, normal_force=1000.0, torque_noise=s_t, twist_noise=1e-5)
+    p_hat, s_min, scale2, first_step, critical, lower, upper, trace, end = calls[("product", -1)]
+    scale = loop_fit.KAPPA_MAX * p_hat[2]
+    assert first_step > 0.2 * scale, "the Wald half-width of y must exceed a fifth of its scale for this seed"
+    # the first trial value: y_hat - FIRST_STEP_CAP kappa_max C, to the rounding of that sum
+    y_hat = p_hat[1] * p_hat[2]
+    assert_within(abs(trace[0] - (y_hat - profile.FIRST_STEP_CAP * scale)), 8 * EPS * scale, "rounding of a sum",
+                  exact=True)
+    assert end.value is not None
+    model = _model(torque, twist, s_t, 1e-5)
+    start = end.p.copy()
+    s = original_fit(model, start, lower, upper, profile.Constraint("product", end.value), loop_fit.KAPPA_MAX)[1]
+    lr = (s - s_min) / scale2
+    # as in the test above: the search's stop (ROOT_TOLERANCE in sqrt(LR)) plus the refits' own tolerance
+    refits = 2 * profile.TOLERANCE * s_min / scale2 / (2 * math.sqrt(critical))
+    slack = profile.ROOT_TOLERANCE * math.sqrt(critical) + refits
+    assert_within(abs(math.sqrt(max(lr, 0.0)) - math.sqrt(critical)), slack,
+                  "the search's stop ROOT_TOLERANCE + the refits' tolerance", exact=True)
+
+
 def test_critical_value_solves_davies_bound():
     # without the T_s search: the one-sided chi-square point, Phi^-1(0.95)^2, the same expression: exact
     assert_close(slip_test.critical_value(0.0), stats.norm.isf(0.05) ** 2, "the same expression", atol=0.0)

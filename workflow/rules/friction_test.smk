@@ -18,15 +18,18 @@ rule friction_test_coverage:
         cycles=FRICTION_TEST["cycles"],
         samples=FRICTION_TEST["samples_per_cycle"],
         seed=FRICTION_TEST["seed"],
+        blas=ONE_BLAS_THREAD,  # one BLAS thread in each worker: two would oversubscribe the two cores
+    threads: 2  # the draws are fitted on two processes (the output does not depend on their number)
     log:
         logfile("friction_test_coverage"),
     resources:
         runtime=10,
         mem_mb=1000,
     shell:
-        "python {input.script} --specimen '{params.specimen}' --scenarios '{params.scenarios}'"
+        "{params.blas} python {input.script} --specimen '{params.specimen}' --scenarios '{params.scenarios}'"
         " --draws {params.draws} --cycles {params.cycles} --samples-per-cycle {params.samples}"
-        " --seed {params.seed} --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+        " --seed {params.seed} --workers {threads} --json {output.json} --tex {output.tex} --macros {output.macros}"
+        " > {log} 2>&1"
 
 
 # Figures for experimenters (notebooks/friction_test.py, paper/sections/friction_test.tex): the lab

@@ -13,12 +13,16 @@ relative width of the interval.  For a loop in stick the rate at which slip is d
 slip test's false-alarm rate (its level is 5 %).
 
 Units: torque N m, twist rad, friction 1, G Pa, compliance rad / (N m).  Output: a JSON data file
-with provenance, the LaTeX table (results/tables/) and macros (results/macros/).
+with provenance, the LaTeX table (results/tables/) and macros (results/macros/).  The noisy records
+are drawn first, in order, from one random stream; ``--workers`` processes then fit them (each fit
+depends on its record alone, so that the output is the same for any number of workers).
 """
 
 import argparse
+import concurrent.futures
 import json
 import math
+import multiprocessing
 import time
 import warnings
 
@@ -68,32 +72,57 @@ def summary(outcomes, draws: int) -> dict:
     return out
 
 
-def scenario_record(rig, scenario, draws, cycles, samples_per_cycle, rng):
+def scenario_draws(rig, scenario, draws, cycles, samples_per_cycle, rng):
+    """The noise-free record of one scenario, its torque noise level (N m) and ``draws`` noisy copies (from ``rng``,
+    in order: the random stream does not depend on how the fits are scheduled)."""
     if scenario["control"] == "torque":
         torque, twist = torque_controlled(rig, scenario["amplitude"] * rig.slip_torque, cycles, samples_per_cycle)
     else:
         torque, twist = twist_controlled(rig, scenario["amplitude"], cycles, samples_per_cycle)
     torque_noise = scenario["torque_noise"] * float(np.ptp(torque))
-    truth = {"friction": rig.friction, "shear_modulus": rig.shear_modulus, "compliance": rig.compliance}
-    outcomes = {key: [] for key in truth}
-    slips, started = 0, time.process_time()
-    for _ in range(draws):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", NoiseLimitedFitWarning)  # counted below, from the result
-            fit = fit_loop(*noisy(torque, twist, torque_noise, scenario["twist_noise"], rng), radius=rig.radius,
-                           normal_force=rig.normal_force, confidence=CONFIDENCE)
-        slips += int(fit.slip_detected)
-        for key, true in truth.items():
-            outcomes[key].append(outcome(getattr(fit, key), true))
-    cpu = time.process_time() - started
+    copies = [noisy(torque, twist, torque_noise, scenario["twist_noise"], rng) for _ in range(draws)]
+    return torque, torque_noise, copies
+
+
+def truth_of(rig) -> dict:
+    return {"friction": rig.friction, "shear_modulus": rig.shear_modulus, "compliance": rig.compliance}
+
+
+def fit_draw(task):
+    """Fit one noisy record: (slip detected, outcome per parameter, CPU-s).  ``task``: (rig, torque, twist)."""
+    rig, torque, twist = task
+    started = time.process_time()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", NoiseLimitedFitWarning)  # counted in the summary, from the result
+        fit = fit_loop(torque, twist, radius=rig.radius, normal_force=rig.normal_force, confidence=CONFIDENCE)
+    outcomes = {key: outcome(getattr(fit, key), true) for key, true in truth_of(rig).items()}
+    return bool(fit.slip_detected), outcomes, time.process_time() - started
+
+
+def fit_all(tasks, workers: int) -> list:
+    """``fit_draw`` of every task, in order, on ``workers`` processes (each fit depends on its record alone: the
+    results do not depend on the number of workers)."""
+    if workers <= 1:
+        return [fit_draw(task) for task in tasks]
+    context = multiprocessing.get_context("fork")  # the workers share the parent's imports
+    with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+        return list(pool.map(fit_draw, tasks))
+
+
+def scenario_record(rig, scenario, torque, torque_noise, fits):
+    """The summary of one scenario's draws (``fits``: their ``fit_draw`` results, in order)."""
+    truth = truth_of(rig)
+    draws = len(fits)
+    slips = sum(slip for slip, _, _ in fits)
     out = {"name": scenario["name"], "control": scenario["control"], "amplitude": scenario["amplitude"],
            "torque_noise": torque_noise, "torque_noise_fraction": scenario["torque_noise"],
            "twist_noise": scenario["twist_noise"],
            "max_torque_ratio": float(np.max(np.abs(torque)) / rig.slip_torque), "draws": draws,
            "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws)}
     for key in truth:
-        out[key] = summary(outcomes[key], draws)
-    print(f"{scenario['name']}: {cpu:.2f} CPU-s", flush=True)  # the log, not the data
+        out[key] = summary([outcomes[key] for _, outcomes, _ in fits], draws)
+    cpu = sum(seconds for _, _, seconds in fits)
+    print(f"{scenario['name']}: {cpu:.2f} CPU-s of fits", flush=True)  # the log, not the data
     return out
 
 
@@ -160,13 +189,21 @@ def main():
     parser.add_argument("--json", required=True)
     parser.add_argument("--tex", required=True)
     parser.add_argument("--macros", required=True)
+    parser.add_argument("--workers", type=int, default=1, help="processes fitting the draws (the output does not "
+                        "depend on it)")
     args = parser.parse_args()
+    if args.workers < 1:
+        parser.error(f"--workers must be >= 1, got {args.workers}")
     specimen = json.loads(args.specimen)
     rig = Rig(**specimen, offset=1e-4)
     rng = np.random.default_rng(args.seed)
+    scenarios = json.loads(args.scenarios)
+    records = [scenario_draws(rig, scenario, args.draws, args.cycles, args.samples_per_cycle, rng)
+               for scenario in scenarios]
+    fits = fit_all([(rig, *copy) for _, _, copies in records for copy in copies], args.workers)
     rows = []
-    for scenario in json.loads(args.scenarios):
-        rows.append(scenario_record(rig, scenario, args.draws, args.cycles, args.samples_per_cycle, rng))
+    for j, (scenario, (torque, torque_noise, _)) in enumerate(zip(scenarios, records, strict=True)):
+        rows.append(scenario_record(rig, scenario, torque, torque_noise, fits[j * args.draws:(j + 1) * args.draws]))
         print(json.dumps({k: rows[-1][k] for k in ("name", "slip_detected", "friction", "shear_modulus",
                                                    "compliance")}), flush=True)
     write_json(args.json, {"specimen": specimen, "scenarios": rows, "confidence": CONFIDENCE},

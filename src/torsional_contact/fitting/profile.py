@@ -62,6 +62,8 @@ MAX_CONSTRAINED_EVALUATIONS = 20
 #: Relative tolerances of the least-squares fits (scipy's ftol, xtol, gtol): S to 1e-6 of itself, about 4e-4 for a
 #: few hundred samples, far below the 0.02 F that decides an interval's end.
 TOLERANCE = 1e-6
+#: The first step (a fraction of psi's scale) where the Wald half-width exceeds a fifth of it (``profile_end``).
+FIRST_STEP_CAP = 0.05
 #: A profile point this far (in LR units) below the minimum is a better minimum, not rounding.
 BETTER_MINIMUM_SLACK = 0.05
 
@@ -248,6 +250,12 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     # steps grow from there); the scale of y = kappa C is its range, kappa_max C (its estimate may sit at 0)
     scale = kappa_max * p_hat[2] if kind == "product" and math.isfinite(kappa_max) else abs(psi_hat)
     delta = first_step if math.isfinite(first_step) else 0.1 * scale
+    if delta > 0.2 * scale and y_cap == math.inf:
+        # a Wald half-width beyond a fifth of psi's scale says nothing about the profile (the likelihood is far from
+        # quadratic: in partial slip under twist noise the T_s ends lie 2-10 % from the estimate while the Wald
+        # half-width is 40-90 %, and a first fit at a fifth lands at LR 1e3-3e3 times F, costing two capped fits
+        # on the way back); start at a quarter of that, from which one growth step (at most 4 times) reaches it
+        delta = FIRST_STEP_CAP * scale
     delta = min(max(delta, 1e-3 * scale), 0.2 * scale, reach)
     lo, hi = 0.0, math.inf  # the bracket: r < target at lo, r >= target at hi
     step, last_step = math.inf, math.inf
