@@ -22,7 +22,7 @@ refits.  Cost: ``count`` fits (about 10-30 ms each for a few hundred samples).
 from __future__ import annotations
 
 import numpy as np
-from scipy import stats
+from scipy import special  # the normal quantiles (scipy.stats: the same functions, 0.5 s more to import)
 
 from .loop_model import LoopModel
 from .profile import fit
@@ -38,9 +38,9 @@ def bias_corrected_percentiles(replicates, estimate: float, confidence: float):
     r = np.sort(np.asarray(replicates, dtype=float))
     below = (np.count_nonzero(r < estimate) + 0.5 * np.count_nonzero(r == estimate)) / r.size
     below = min(max(below, 0.5 / r.size), 1.0 - 0.5 / r.size)
-    z0 = float(stats.norm.ppf(below))
-    z = float(stats.norm.ppf(0.5 + confidence / 2))
-    probabilities = stats.norm.cdf([2 * z0 - z, 2 * z0 + z])
+    z0 = float(special.ndtri(below))
+    z = float(special.ndtri(0.5 + confidence / 2))
+    probabilities = special.ndtr([2 * z0 - z, 2 * z0 + z])
     return tuple(float(np.quantile(r, q)) for q in probabilities)
 
 
