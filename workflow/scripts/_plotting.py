@@ -12,7 +12,6 @@ import os
 
 import matplotlib.pyplot as plt
 
-from torsional_contact.backends import METHODS
 from torsional_contact.provenance import atomic_path
 
 __all__ = ["use_style", "save_figure", "figure_parser", "method_options", "load_data", "method_label", "plt"]
@@ -60,10 +59,18 @@ def figure_parser(doc: str, data: bool = False, quantities=None) -> argparse.Arg
     return parser
 
 
+def _methods():
+    """The method table (imported here: the solvers' import chain costs about half a CPU-second at the start of
+    the figure scripts that only plot data)."""
+    from torsional_contact.backends import METHODS
+
+    return METHODS
+
+
 def method_options(args) -> dict:
     """``method`` and ``n_terms`` for ``solve`` from a figure's --method and --n-terms: N only for a
     truncated method (a weak form); the others choose their Dini terms per call (``n_terms=None``)."""
-    truncated = METHODS[args.method].truncated
+    truncated = _methods()[args.method].truncated
     return {"method": args.method, "n_terms": args.n_terms if truncated else None}
 
 
@@ -80,5 +87,5 @@ METHOD_LABELS = {"fast": "Abel-Fredholm", "complete": "complete weak form", "pub
 def method_label(solution) -> str:
     """The method of a ``Solution`` as figures name it, with N for the weak forms."""
     name = METHOD_LABELS.get(solution.method, solution.method)
-    truncated = METHODS[solution.method].truncated
+    truncated = _methods()[solution.method].truncated
     return f"{name}, N = {solution.n_terms}" if truncated and solution.n_terms is not None else name
