@@ -218,8 +218,9 @@ def _converged_solutions(stick_radius: float, n_terms: int) -> dict:
     complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
     published = complete[:n, :n]
     row, col = scalings(published)
-    lu, pivots = linalg.lu_factor(published * row[:, None] * col[None, :], check_finite=True)
-    rcond = _rcond(lu, published * row[:, None] * col[None, :])
+    scaled = published * row[:, None] * col[None, :]
+    lu, pivots = linalg.lu_factor(scaled, check_finite=True)
+    rcond = _rcond(lu, scaled)
     if rcond < RCOND_WARN:
         warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
                       f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=2)
