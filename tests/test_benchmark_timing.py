@@ -2,6 +2,7 @@
 benchmark reports of each timed case: the result of its timed calls, not of a second solve."""
 
 import importlib
+import json
 import warnings
 from pathlib import Path
 
@@ -81,3 +82,20 @@ def test_speed_error_benchmark_solves_each_case_only_in_its_timed_rounds(scripts
                 assert abs(row["traction_error"] - float(np.max(np.abs(traction - q_exact)))) <= bound
             assert row["torque"] == s.torque
             assert row["torque_error"] == abs(s.torque - exact.torque)
+
+
+def test_speed_error_benchmark_repeats_only_the_radius_whose_times_are_shown(scripts, monkeypatch, tmp_path):
+    """The figure and the macros show times at the middle stick radius only: it runs every round; the
+    other radii (their errors are shown) run one, and the JSON says so per radius and per case."""
+    _, bench = scripts
+    out = tmp_path / "bench.json"
+    monkeypatch.setattr("sys.argv", ["benchmark_speed_error.py", "--stick-radius", "0.3", "0.6", "0.9",
+                                     "--n-terms", "145", "--nodes", "10", "--repeats", "3", "--reference-digits",
+                                     "--per-radius-radii", "2", "--curve-radii", "2", "--inverse-torques", "1",
+                                     "--json", str(out)])
+    bench.main()
+    results = json.loads(out.read_text())["results"]
+    assert [r["stick_radius"] for r in results] == [0.3, 0.6, 0.9]
+    assert [r["rounds"] for r in results] == [1, 3, 1]
+    for result in results:
+        assert {row["timing"]["samples"] for row in result["rows"]} == {result["rounds"]}

@@ -7,6 +7,9 @@ ruff check src tests workflow notebooks
 # One BLAS thread, as the workflow pins it (Snakefile): the last digits of LAPACK estimates depend on the thread
 # count.  The tests do not depend on the pin: workflow/checks/fp_variants.py runs them with one and two threads
 # and with numpy's SIMD dispatch at its baseline (CI runs two of those variants after this command).
+# pytest keeps its rewritten test modules as bytecode only where Python may write bytecode: without it each
+# of the three processes (the controller and two workers) rewrites every test module again (~3 CPU-s each)
+unset PYTHONDONTWRITEBYTECODE
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
 # the fast and slow tiers (the slow one: end-to-end builds), on two workers (the statistical sweeps run in CI:
 # .ci/run); the workflow tests share one

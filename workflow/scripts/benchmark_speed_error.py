@@ -9,6 +9,10 @@ Errors are measured against the Abel-Fredholm solution at twice its default node
 (series tractions T* r - sum c_n lam_n J1(lam_n r), eq. 26), of the result of each case's last timed
 call (no case is solved again for its errors).  The mpmath reference of the truncated system is timed
 once per precision (it takes seconds).  Writes JSON (with the machine) and macros.
+
+Times are shown at the middle stick radius only (the work-precision figure and the macros); at the
+other radii the figures show errors (fig_convergence.py), so their cases run one round: their
+``timing`` holds one sample (``rounds`` of each radius says how many), not a median to quote.
 """
 
 import argparse
@@ -38,6 +42,7 @@ def _series_solver(b, method, n):
 
 
 def benchmark(b, n_terms_list, nodes_list, rounds, r_grid):
+    """Every case at stick radius ``b``: ``rounds`` interleaved timings and the errors of the last result."""
     exact = solve_abel_fredholm(b, 2 * default_nodes(b))
     q_exact = exact.interface_traction(r_grid)
     cases = {(m, n): _series_solver(b, m, n) for m in ("published", "complete") for n in n_terms_list}
@@ -62,7 +67,8 @@ def benchmark(b, n_terms_list, nodes_list, rounds, r_grid):
             "torque": s.torque, "torque_error": abs(s.torque - exact.torque), "omega_error": omega_error,
             "traction_error": float(np.max(np.abs(traction - q_exact))),
         })
-    return {"stick_radius": b, "reference_torque": exact.torque, "reference_rigid_rotation": exact.rigid_rotation,
+    return {"stick_radius": b, "rounds": min(len(t.samples) for t in timings.values()),
+            "reference_torque": exact.torque, "reference_rigid_rotation": exact.rigid_rotation,
             "reference_nodes": exact.n_nodes, "default_nodes": default_nodes(b), "rows": rows}
 
 
@@ -136,7 +142,8 @@ def main():
     p.add_argument("--stick-radius", type=float, nargs="+", default=[0.3, 0.6, 0.9])
     p.add_argument("--n-terms", type=int, nargs="+", default=[145, 290, 580, 1160, 2320])
     p.add_argument("--nodes", type=int, nargs="+", default=[6, 10, 14, 18, 24, 32])
-    p.add_argument("--repeats", type=int, default=7, help="interleaved rounds")
+    p.add_argument("--repeats", type=int, default=7, help="interleaved rounds (at the middle stick radius; the "
+                   "others run one: only their errors are shown)")
     p.add_argument("--reference-digits", type=int, nargs="*", default=[20, 30, 50])
     p.add_argument("--per-radius-radii", type=int, default=49, help="stick radii in [0.02, 0.98] timed one by one")
     p.add_argument("--curve-radii", type=int, default=200, help="stick radii of the timed T*(b) curve")
@@ -148,9 +155,10 @@ def main():
         p.error("--n-terms must include 145 (the ratios are relative to it)")
     r_grid = np.linspace(0.0, 1.0, 201)
     results = []
+    timed_radius = a.stick_radius[len(a.stick_radius) // 2]  # the radius whose times the figure and macros show
     for b in a.stick_radius:
-        result = benchmark(b, sorted(a.n_terms), sorted(a.nodes), a.repeats, r_grid)
-        if a.reference_digits and b == a.stick_radius[len(a.stick_radius) // 2]:
+        result = benchmark(b, sorted(a.n_terms), sorted(a.nodes), a.repeats if b == timed_radius else 1, r_grid)
+        if a.reference_digits and b == timed_radius:
             result["rows"] += reference_sweep(b, a.reference_digits, 145, result["reference_torque"],
                                               result["reference_rigid_rotation"])
         print(_format(result), flush=True)
