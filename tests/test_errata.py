@@ -19,7 +19,7 @@ from tolerances import EPS, assert_within
 
 from torsional_contact import solve
 from torsional_contact.io import cli
-from torsional_contact.verification import errata, weak_form_mp
+from torsional_contact.verification import errata, quadrature_mp, weak_form_mp
 from torsional_contact.verification.errata import (
     bilateral,
     conditions,
@@ -357,6 +357,25 @@ def test_quadrature_detects_a_wrong_formula():
         right = weak_form_mp.dini_norm(lam)
         assert errata.verdict_formula(float(abs(wrong - quad) / quad)) == "incorrect"
         assert errata.verdict_formula(float(abs(right - quad) / quad)) == "correct"
+
+
+@pytest.mark.parametrize("flint", [True, False])
+def test_products_of_j1_by_the_rule_against_closed_forms(flint, monkeypatch):
+    """``Nodes.integral_of_j1`` (Arb balls, or mpf without python-flint) against closed forms the
+    errata check independently: h (eq. 35) = int_0^1 J1(lam r)^2 r dr for lam not a zero of J2, and
+    int_0^1 r^2 J1(lam r) dr = J2(lam) / lam.  The 20-point rule per period is exact to ~1e-38 for
+    these (``gauss_legendre``); 40-digit rounding of ~1e3 terms: 1e-34 relative leaves 10x margin."""
+    monkeypatch.setattr(quadrature_mp.ap, "FLINT", flint and quadrature_mp.ap.FLINT)
+    with mpmath.workdps(40):
+        lam = mpmath.mpf("731.3")
+        nodes = quadrature_mp.Nodes(0, 1, 2 * lam)
+        h = nodes.integral_of_j1([lam, lam], (0, 1))
+        assert abs(h / weak_form_mp.dini_norm(lam) - 1) < mpmath.mpf(10) ** -34
+        moment = nodes.integral_of_j1([lam], (0, 0, 1))
+        assert abs(moment / (mpmath.besselj(2, lam) / lam) - 1) < mpmath.mpf(10) ** -34
+        # a constant and a linear term at once: int_0^1 (3 - 2 r) J1 r dr = 3 int J1 r - 2 J2 / lam
+        mixed = nodes.integral_of_j1([lam], (0, 3, -2))
+        assert abs(mixed - (3 * nodes.integral_of_j1([lam], (0, 1)) - 2 * moment)) < mpmath.mpf(10) ** -36
 
 
 def test_gauss_legendre_oscillatory():

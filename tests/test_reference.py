@@ -45,6 +45,23 @@ def test_zeros_match_besseljzero_and_restore_precision():
     assert picked == (lam[2], lam[144])
 
 
+@pytest.mark.skipif(not arbitrary_precision.FLINT, reason="needs python-flint")
+@pytest.mark.parametrize(("indices", "digits"), [(range(1, 61), 40), ([1, 145, 320, 3000, 3001], 40),
+                                                 ([2, 145, 290], 70)])
+def test_zeros_by_newton_in_arb_and_in_mpmath_are_the_same_numbers(indices, digits):
+    """The Arb iteration (the default) and mpmath's round to the same mpf: both stop at a step below
+    10^-(digits + 5) relative, far inside the last digit kept; and J2 vanishes there to the digits asked."""
+    start = [float(bessel_j2_zeros(max(indices))[i - 1]) for i in indices]
+    arb = weak_form_mp._newton_j2(start, digits, arithmetic="arb")
+    mp = weak_form_mp._newton_j2(start, digits, arithmetic="mpmath")
+    assert arb == mp
+    with mpmath.workdps(digits + 10):
+        for lam in arb:  # |J2(lam)| <= |J2'| |lam - lam*|, |lam - lam*| <= half a unit of the last digit
+            assert_within(abs(mpmath.besselj(2, lam)), mpmath.mpf(10) ** (1 - digits) * lam, "a zero of J2")
+    with pytest.raises(ValueError, match="arithmetic must be"):
+        weak_form_mp._newton_j2(start, digits, arithmetic="flint")
+
+
 @pytest.mark.parametrize("lam_index", [1, 7, 40])
 def test_closed_forms_match_quadrature(lam_index):
     with mpmath.workdps(30):

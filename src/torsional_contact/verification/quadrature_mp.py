@@ -57,21 +57,69 @@ class Nodes:
     def __init__(self, lower, upper, max_frequency):
         self.nodes, self.weights = gauss_legendre(lower, upper, max_frequency)
         self._j1 = {}
+        self._j1_balls = {}
         self._arb_nodes = None
+        self._arb_weight_list = None
 
     def j1(self, lam):
-        """J1(lam r) at the nodes: python-flint (Arb) if importable, else mpmath."""
+        """J1(lam r) at the nodes (mpf): python-flint (Arb) if importable, else mpmath."""
         key = mpmath.nstr(lam, 30)
         if key not in self._j1:
             if not ap.FLINT:  # pragma: no cover - without python-flint
                 self._j1[key] = [mpmath.besselj(1, lam * r) for r in self.nodes]
             else:
-                with ap.flint_dps(mpmath.mp.dps + 5):
-                    lam_arb = ap.mp_to_arb(lam)
-                    if self._arb_nodes is None:
-                        self._arb_nodes = [ap.mp_to_arb(r) for r in self.nodes]
-                    self._j1[key] = [ap.arb_to_mp((lam_arb * r).bessel_j(1)) for r in self._arb_nodes]
+                self._j1[key] = [ap.arb_to_mp(v) for v in self._j1_arb(lam)]
         return self._j1[key]
+
+    def _j1_arb(self, lam):
+        """J1(lam r) at the nodes as Arb balls at mpmath's precision + 5 digits (cached)."""
+        key = (mpmath.nstr(lam, 30), mpmath.mp.dps)
+        if key not in self._j1_balls:
+            with ap.flint_dps(mpmath.mp.dps + 5):
+                lam_arb = ap.mp_to_arb(lam)
+                if self._arb_nodes is None:
+                    self._arb_nodes = [ap.mp_to_arb(r) for r in self.nodes]
+                self._j1_balls[key] = [(lam_arb * r).bessel_j(1) for r in self._arb_nodes]
+        return self._j1_balls[key]
+
+    def _arb_weights(self):
+        if self._arb_weight_list is None:
+            self._arb_weight_list = [ap.mp_to_arb(w) for w in self.weights]
+        return self._arb_weight_list
 
     def integral(self, values):
         return mpmath.fsum(w * v for w, v in zip(self.weights, values, strict=True))
+
+    def integral_of_j1(self, lams, polynomial):
+        """The rule applied to p(r) prod_k J1(lam_k r), p(r) = sum_j polynomial[j] r^j (mpf).
+
+        In Arb when python-flint is importable: the sum of the weighted products is formed in
+        balls at mpmath's precision + 5 digits (no mpf product per node) and rounded once; else
+        as ``integral`` over mpf values.
+        """
+        coefficients = [mpmath.mpf(c) for c in polynomial]
+        if not ap.FLINT:  # pragma: no cover - without python-flint
+            factors = [self.j1(lam) for lam in lams]
+            values = []
+            for i, r in enumerate(self.nodes):
+                value = coefficients[-1]
+                for cj in reversed(coefficients[:-1]):  # Horner
+                    value = value * r + cj
+                for factor in factors:
+                    value *= factor[i]
+                values.append(value)
+            return self.integral(values)
+        with ap.flint_dps(mpmath.mp.dps + 5):
+            factors = [self._j1_arb(lam) for lam in lams]
+            weights = self._arb_weights()
+            c = [ap.mp_to_arb(x) for x in coefficients]
+            total = ap.flint.arb(0)
+            for i, r in enumerate(self._arb_nodes):
+                value = c[-1]
+                for cj in reversed(c[:-1]):  # Horner
+                    value = value * r + cj
+                value *= weights[i]
+                for factor in factors:
+                    value *= factor[i]
+                total += value
+        return ap.arb_to_mp(total)

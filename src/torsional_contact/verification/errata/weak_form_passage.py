@@ -69,16 +69,14 @@ def _weak_form_by_quadrature(lam, a, b, digits):
         n = len(lam)
         inner = Nodes(0, b, 2 * lam[-1] / a)
         outer = Nodes(b, a, 2 * lam[-1] / a)
-        ji = [inner.j1(x / a) for x in lam]
-        jo = [outer.j1(x / a) for x in lam]
         matrix = mpmath.matrix(n, n)
         for m in range(n):
             for k in range(n):
-                stick = inner.integral([u * v * r for u, v, r in zip(ji[k], ji[m], inner.nodes, strict=True)])
-                slip = outer.integral([u * v * r for u, v, r in zip(jo[k], jo[m], outer.nodes, strict=True)])
+                stick = inner.integral_of_j1([lam[k] / a, lam[m] / a], (0, 1))
+                slip = outer.integral_of_j1([lam[k] / a, lam[m] / a], (0, 1))
                 matrix[m, k] = lam[k] * (stick + lam[k] * slip)
-        b_lin = [outer.integral([r / a * v * r for v, r in zip(jo[m], outer.nodes, strict=True)]) for m in range(n)]
-        b_const = [outer.integral([-v * r for v, r in zip(jo[m], outer.nodes, strict=True)]) for m in range(n)]
+        b_lin = [outer.integral_of_j1([lam[m] / a], (0, 0, 1 / a)) for m in range(n)]
+        b_const = [outer.integral_of_j1([lam[m] / a], (0, -1)) for m in range(n)]
     return matrix, b_lin, b_const
 
 
