@@ -61,12 +61,19 @@ print(json.dumps(out))
 '''
 
 
+def _clean_environment() -> dict:
+    """The environment without the development checkout's paths.  Python may write bytecode: the core
+    environment is installed without it (``--no-compile``: compiling all of scipy costs more than the
+    probes), and its first process leaves the bytecode of what it imports for the next ones."""
+    return {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV", "PYTHONDONTWRITEBYTECODE")}
+
+
 def _run_probe(python, folder: Path) -> dict:
     signal = folder / "signal.txt"
     signal.write_text("0\n1.2\n-0.8\n1.25\n-1.1\n0.3\n")
     probe = folder / "probe.py"
     probe.write_text(PROBE)
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env = _clean_environment()
     run = subprocess.run([str(python), str(probe), str(ROOT / "notebooks" / "data" / "lab_loop.csv"), str(signal),
                           ",".join(NOT_IN_CORE)], capture_output=True, text=True, cwd=folder, env=env)
     assert run.returncode == 0, run.stderr
@@ -77,7 +84,7 @@ def _run_probe(python, folder: Path) -> dict:
 def core_python(tmp_path_factory):
     """The python of a fresh virtual environment with the wheel and its core dependencies only."""
     folder = tmp_path_factory.mktemp("core")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env = _clean_environment()
     subprocess.run([sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "--wheel-dir", str(folder / "dist"),
                     str(ROOT)], check=True, capture_output=True, env=env)
     (wheel,) = (folder / "dist").glob("torsional_contact-*.whl")
@@ -85,7 +92,7 @@ def core_python(tmp_path_factory):
     # environment's pip installs into it (``pip --python``), resolving the wheel's declared dependencies there
     subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(folder / "venv")], check=True, env=env)
     python = folder / "venv" / "bin" / "python"
-    subprocess.run([sys.executable, "-m", "pip", "--python", str(python), "install", "--quiet", "-c",
+    subprocess.run([sys.executable, "-m", "pip", "--python", str(python), "install", "--quiet", "--no-compile", "-c",
                     str(ROOT / "environment.txt"), str(wheel)], check=True, capture_output=True, env=env)
     return python
 
