@@ -102,7 +102,13 @@ class Skeleton:
         # each cubic in the power basis of dx = x - x_j: value + dx (c1 + dx (c2 + dx c3)), the last node's own
         # (constant) piece appended for the points beyond it
         self._t_coefficients = self._power_basis(self._t, self._t_slope)
-        self._omega_coefficients = self._power_basis(self._omega, self._omega_slope)
+        self._omega_table = None  # omega_m's cubics, formed on the first call with ``rotation``
+        # one row per quantity, one column per piece: the left node x_j, c0 .. c3 of T* and 2 c2 (exact), so that one
+        # gather fetches everything a point needs; a point's piece is the number of inner nodes x_1 .. x_{n-2} at or
+        # below |x| (the last piece continues beyond the last node)
+        self._table = np.vstack([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
+        self._inner = self._x[1:-1]
+        self._last = float(self._x[-1])
 
     def _power_basis(self, value, slope):
         h = np.diff(self._x)
@@ -120,23 +126,30 @@ class Skeleton:
         """
         x = np.asarray(x, dtype=float)
         a = np.abs(x)
-        nodes = self._x
-        last = nodes[-1]
-        j = np.minimum(np.searchsorted(nodes, a, side="right") - 1, nodes.size - 2)
-        dx = np.minimum(a, last) - nodes[j]
-        c0, c1, c2, c3 = (c[j] for c in self._t_coefficients)
+        last = self._last
+        j = np.searchsorted(self._inner, a, side="right")  # the piece: min(last node index, pieces - 1)
+        nodes, c0, c1, c2, c3, c2_twice = np.take(self._table, j, axis=1)
+        dx = np.minimum(a, last) - nodes
         t = c0 + dx * (c1 + dx * (c2 + dx * c3))
         beyond = a > last
+        is_beyond = bool(np.any(beyond))
         # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
-        slope = np.where(beyond, 0.0, c1 + dx * (2.0 * c2 + 3.0 * dx * c3))
+        slope = c1 + dx * (c2_twice + 3.0 * dx * c3)
+        if is_beyond:
+            slope = np.where(beyond, 0.0, slope)
         sign = np.sign(x)
         if curvature:
-            return sign * t, slope, sign * np.where(beyond, 0.0, 2.0 * c2 + 6.0 * dx * c3)
+            second = c2_twice + 6.0 * dx * c3
+            if is_beyond:
+                second = np.where(beyond, 0.0, second)
+            return sign * t, slope, sign * second
         if not rotation:
             return sign * t, slope
-        c0, c1, c2, c3 = (c[j] for c in self._omega_coefficients)
+        if self._omega_table is None:
+            self._omega_table = np.vstack(self._power_basis(self._omega, self._omega_slope))
+        c0, c1, c2, c3 = np.take(self._omega_table, j, axis=1)
         omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        if beyond.any():
+        if is_beyond:
             extra = (a - last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)
         return sign * t, slope, sign * omega
