@@ -68,7 +68,7 @@ import math
 import numpy as np
 
 from .masing import pieces, torque_along, turning_torques, walk
-from .skeleton import Skeleton
+from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
 
@@ -128,7 +128,7 @@ class LoopModel:
         key = p.tobytes()
         if self._curve[0] != key:
             slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
-            skeleton = Skeleton(kappa)
+            skeleton = skeleton_of(kappa)
             path = walk(np.append(p[4:], self.end) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
             # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until
@@ -184,7 +184,7 @@ class LoopModel:
         g_grid, s_grid, c_grid = curve(grid, self.segment)
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
         # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far
-        state = np.stack([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
+        state = np.array([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
         # the samples still moving, with their observations, segments and states (the iteration's own copies)
         active, observed, segment, current = columns, self._observed, self.segment, state.copy()
         for _ in range(FOOT_ITERATIONS):
@@ -214,7 +214,7 @@ class LoopModel:
             lower = trial_misfit[best, within] <= misfit
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
             active, observed, segment = active[lower], observed[:, lower], segment[lower]
-            current = np.stack([trial, g_trial, s_trial, c_trial])[:, best[lower], within[lower]]
+            current = np.array([trial, g_trial, s_trial, c_trial])[:, best[lower], within[lower]]
             state[:, active] = current
             if active.size == 0:
                 break

@@ -110,10 +110,11 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
     gain = path.g[last] * path.direction[last]
     at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
-    increments = gain * at_turning[0]
-    turning = np.empty(n_turning)
-    for j in range(n_turning):
-        turning[j] = (turning[o[j]] if o[j] >= 0 else 0.0) + increments[j]
+    increments = (gain * at_turning[0]).tolist()
+    turning_list = []  # Python floats: the same IEEE additions as on the array, without its per-element overhead
+    for j, origin_j in enumerate(o.tolist()):
+        turning_list.append((turning_list[origin_j] if origin_j >= 0 else 0.0) + increments[j])
+    turning = np.array(turning_list, dtype=float)
     if not jacobian:
         return Turning(turning, None)
     # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
