@@ -21,7 +21,7 @@ from torsional_contact.fitting.bootstrap import bias_corrected_percentiles
 from torsional_contact.fitting.loop_model import LoopModel
 from torsional_contact.fitting.masing import torque_along, walk
 from torsional_contact.fitting.samples import reversal_threshold, turning_points
-from torsional_contact.fitting.skeleton import Skeleton
+from torsional_contact.fitting.skeleton import Skeleton, skeleton_of
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
 from torsional_contact.histories import analyse_signal, turning_point_indices
 from torsional_contact.io.cli import main
@@ -168,6 +168,55 @@ def test_foot_points_minimise_each_samples_distance(rig_kind, seed):
     # model's cubic term; Brent's minimum (xatol 1e-14 of a twist, (1e-14 / s_w)^2 in d^2) and the rounding of
     # misfits of O(100) (1e-13) are far below
     assert_within(max(excess), 2 * loop_model.FOOT_GAIN, "Gauss-Newton stop: excess <= next gain (x 2)")
+
+
+@pytest.mark.parametrize("seed", seeds())
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_cached_model_matches_a_fresh_one_as_the_parameters_move(rig_kind, seed):
+    """A model keeps the curve and foot points of its last parameters (and ``skeleton_of`` the last skeletons): its
+    residuals, Jacobian and foot points, as the parameters move away and back (kappa, T_s, C, the twist of the virgin
+    state and a reversal's twist in turn), equal those of a new model evaluated at each point alone.  The same
+    arithmetic on the same numbers either way: exact equality."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, seed)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    moved = []
+    for j, factor in ((1, 1.3), (0, 0.97), (2, 1.02), (3, 1.5), (4, 1.0 + 1e-2)):
+        q = p.copy()
+        q[j] *= factor
+        moved.append(q)
+    # away and back, a Jacobian after a value at the same point, a value after a Jacobian, a point twice in a row
+    sequence = [(p, False), (moved[0], False), (moved[0], True), (p, True), (moved[1], True), (p, False),
+                (moved[2], False), (moved[3], True), (moved[3], True), (moved[4], False), (p, True)]
+    for q, jacobian in sequence:
+        fresh = _model(torque, twist, s_t, s_w)
+        got = model.distances(q, jacobian=jacobian)
+        skeleton_of.cache_clear()  # the new model makes its own skeleton
+        expected = fresh.distances(q, jacobian=jacobian)
+        for a, b in zip(got if jacobian else (got,), expected if jacobian else (expected,), strict=True):
+            assert np.array_equal(a, b)
+        assert np.array_equal(model.foot_points(q), fresh.foot_points(q))
+        curvature = model.torque_at(q, twist, curvature=True)[3]
+        skeleton_of.cache_clear()
+        assert np.array_equal(curvature, fresh.torque_at(q, twist, curvature=True)[3])
+
+
+def test_curve_on_a_grid_of_twists_per_sample_matches_one_sample_at_a_time():
+    """``torque_along`` on a (grid point, sample) array of twists with the samples' segments broadcast (as the foot
+    points use it) gives, at every point, what it gives for that point alone with its own segment."""
+    torque, twist, s_t, s_w = _noisy_record("torque-controlled partial slip", 11)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    # offsets up to a thousandth of the twist range: samples next to a reversal or a loop closure change piece
+    grid = twist + np.linspace(-1e-3, 1e-3, 7)[:, None] * np.ptp(twist)
+    path, turning, branches, offset, lookup = model._curve_of(p)
+    assert lookup.thresholds, "the record's walk must have a segment of several pieces (a loop closure)"
+    broadcast = torque_along(path, grid - offset, model.segment, branches["curvature"], curvature=True,
+                             turning=turning, lookup=lookup)
+    for i in range(twist.size):
+        alone = model.torque_at(p, grid[:, i], index=np.full(grid.shape[0], i), curvature=True)
+        for k in (0, 1, 3):
+            assert np.array_equal(broadcast[k][:, i], alone[k])
 
 
 @pytest.mark.parametrize("seed", seeds())

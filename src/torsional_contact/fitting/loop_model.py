@@ -67,8 +67,8 @@ import math
 
 import numpy as np
 
-from .masing import torque_along, turning_torques, walk
-from .skeleton import Skeleton
+from .masing import pieces, torque_along, turning_torques, walk
+from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
 
@@ -113,23 +113,32 @@ class LoopModel:
         self._foot = (None, None)
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
+        self._columns = np.arange(self.twist.size)
+        self._observed = np.stack([self.torque, self.twist])
 
     @property
     def size(self) -> int:
         """Number of parameters P = 4 + M."""
         return 4 + self.reversals.size
 
-    def _curve_of(self, p):
-        """(skeleton, walk, turning torques with their gradient, branch functions) for p, cached for the last p."""
+    def _curve_of(self, p, gradient: bool = False):
+        """[walk, turning torques (with their gradient if ``gradient``), branch functions, twist of the virgin state,
+        the walk's ``masing.pieces``] for p, cached for the last p."""
         p = np.asarray(p, dtype=float)
         key = p.tobytes()
         if self._curve[0] != key:
             slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
-            skeleton = Skeleton(kappa)
+            skeleton = skeleton_of(kappa)
             path = walk(np.append(p[4:], self.end) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
-            self._curve = (key, (path, turning_torques(path, branches["jacobian"], True), branches, offset))
-        return self._curve[1]
+            # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until
+            # a Jacobian is asked for
+            turning = turning_torques(path, branches["value"])
+            self._curve = (key, [path, turning, branches, offset, pieces(path, turning)])
+        curve = self._curve[1]
+        if gradient and curve[1].gradient is None:
+            curve[1] = turning_torques(curve[0], curve[2]["jacobian"], True)
+        return curve
 
     def torque_at(self, p, twist, jacobian: bool = False, index=None, curvature: bool = False):
         """(g, dg/dtheta, turning-point torques[, dg/dp or d^2g/dtheta^2]) at the twists ``twist`` of the samples
@@ -137,11 +146,11 @@ class LoopModel:
 
         ``index`` (default: every sample, in order) names the samples, hence their segments.
         """
-        path, turning, branches, offset = self._curve_of(p)
+        path, turning, branches, offset, lookup = self._curve_of(p, jacobian)
         segment = self.segment if index is None else self.segment[index]
         branch = branches["curvature" if curvature else "jacobian" if jacobian else "value"]
         return torque_along(path, np.asarray(twist, dtype=float) - offset, segment, branch, jacobian, curvature,
-                            turning)
+                            turning, lookup)
 
     def foot_points(self, p) -> np.ndarray:
         """The true twist u_i* of every sample: the point of the curve nearest to it in noise units."""
@@ -153,54 +162,63 @@ class LoopModel:
         if self._foot[0] == key:
             return self._foot[1]
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
+        path, turning, branches, offset, lookup = self._curve_of(p)
+        branch = branches["curvature"]
+
+        def curve(twist, segment):
+            """(g, dg/dtheta, d^2g/dtheta^2) at twists of any shape, ``segment`` broadcast against them."""
+            torque, slope, _, second = torque_along(path, twist - offset, segment, branch, curvature=True,
+                                                    turning=turning, lookup=lookup)
+            return torque, slope, second
+
         # Start from the best of a grid of twists around each sample.  The global minimum lies within
         # s_theta sqrt(misfit at the measured twist) of it (its misfit is no larger, and the twist term alone would
         # exceed that further out); near a sharp bend of the curve (the knee of a gross-slip loop with a small
         # contact twist) a sample's misfit has two minima, and Newton's steps from the measured twist find the wrong
-        # one often enough to make the sum of squares jump as the parameters move.
-        n = self.twist.size
+        # one often enough to make the sum of squares jump as the parameters move.  The grid is (grid point,
+        # sample); every sample's column shares its segment.
+        columns = self._columns
         misfit = (self.torque - self.torque_at(p, self.twist)[0]) ** 2 / s_t2
         reach = self.twist_noise * np.sqrt(misfit)
-        grid = (self.twist[None, :] + FOOT_GRID[:, None] * reach[None, :]).ravel()
-        g_grid, s_grid, _, c_grid = self.torque_at(p, grid, index=np.tile(np.arange(n), FOOT_GRID.size),
-                                                   curvature=True)
-        values = ((np.tile(self.torque, FOOT_GRID.size) - g_grid) ** 2 / s_t2
-                  + (np.tile(self.twist, FOOT_GRID.size) - grid) ** 2 / s_w2).reshape(FOOT_GRID.size, n)
-        best = np.argmin(values, axis=0) * n + np.arange(n)
-        u, torque, slope, second = grid[best], g_grid[best], s_grid[best], c_grid[best]
-        active = np.arange(n)
+        grid = self.twist + FOOT_GRID[:, None] * reach
+        g_grid, s_grid, c_grid = curve(grid, self.segment)
+        values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
+        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far
+        state = np.array([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
+        # the samples still moving, with their observations, segments and states (the iteration's own copies)
+        active, observed, segment, current = columns, self._observed, self.segment, state.copy()
         for _ in range(FOOT_ITERATIONS):
-            t_obs, w_obs, w = self.torque[active], self.twist[active], u[active]
-            g, s, c = torque[active], slope[active], second[active]
+            (t_obs, w_obs), (w, g, s, c) = observed, current
             with np.errstate(over="ignore", invalid="ignore"):
+                torque_misfit, twist_misfit = t_obs - g, w_obs - w
                 gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
-                newton = gauss_newton - (t_obs - g) * c / s_t2  # with it: quadratic convergence where positive
-                gradient = (t_obs - g) * s / s_t2 + (w_obs - w) / s_w2  # minus half the misfit's derivative
+                newton = gauss_newton - torque_misfit * c / s_t2  # with it: quadratic convergence where positive
+                gradient = torque_misfit * s / s_t2 + twist_misfit / s_w2  # minus half the misfit's derivative
                 step = gradient / np.where(newton > 0.1 * gauss_newton, newton, gauss_newton)
-                gain = np.nan_to_num(step * gradient, nan=0.0, posinf=0.0)  # predicted decrease of the misfit
-            keep = gain > FOOT_GAIN
-            active, t_obs, w_obs, w, step = active[keep], t_obs[keep], w_obs[keep], w[keep], step[keep]
+                gain = step * gradient  # predicted decrease of the misfit
+            # no gain where it is NaN or +inf (FOOT_GAIN > 0)
+            keep = (gain > FOOT_GAIN) & (gain != np.inf)
+            active = active[keep]
             if active.size == 0:
                 break
-            misfit = (t_obs - torque[active]) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2
-            # the full step and its fractions in one evaluation; each sample keeps its best if it lowers the misfit
-            trial = (w[None, :] + STEP_FRACTIONS[:, None] * step[None, :]).ravel()
-            g_trial, s_trial, _, c_trial = self.torque_at(p, trial, index=np.tile(active, STEP_FRACTIONS.size),
-                                                          curvature=True)
-            shape = (STEP_FRACTIONS.size, active.size)
-            trial_misfit = ((np.tile(t_obs, STEP_FRACTIONS.size) - g_trial) ** 2 / s_t2
-                            + (np.tile(w_obs, STEP_FRACTIONS.size) - trial) ** 2 / s_w2).reshape(shape)
+            observed, segment, step, w = observed[:, keep], segment[keep], step[keep], w[keep]
+            t_obs, w_obs = observed
+            misfit = torque_misfit[keep] ** 2 / s_t2 + twist_misfit[keep] ** 2 / s_w2
+            # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if it
+            # lowers the misfit
+            trial = w + STEP_FRACTIONS[:, None] * step
+            g_trial, s_trial, c_trial = curve(trial, segment)
+            trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
             best = np.argmin(trial_misfit, axis=0)
-            columns = np.arange(active.size)
-            lower = trial_misfit[best, columns] <= misfit
-            chosen = (best * active.size + columns)[lower]
-            moved = active[lower]
-            u[moved], torque[moved], slope[moved], second[moved] = (trial[chosen], g_trial[chosen], s_trial[chosen],
-                                                                    c_trial[chosen])
-            todo = ~lower
-            active = active[~todo]  # a sample whose step cannot lower its misfit sits at its foot point (a kink)
+            within = columns[:active.size]
+            lower = trial_misfit[best, within] <= misfit
+            # a sample whose step cannot lower its misfit sits at its foot point (a kink)
+            active, observed, segment = active[lower], observed[:, lower], segment[lower]
+            current = np.array([trial, g_trial, s_trial, c_trial])[:, best[lower], within[lower]]
+            state[:, active] = current
             if active.size == 0:
                 break
+        u, torque, slope = state[0], state[1], state[2]
         self._foot = (key, (u, torque, slope))
         return self._foot[1]
 
@@ -218,7 +236,7 @@ class LoopModel:
         with np.errstate(over="ignore"):
             scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
         d = (self.torque - torque - slope * (self.twist - u)) / scale
-        path, turning = self._curve_of(p)[:2]
+        turning = self._curve_of(p, jacobian)[1]
         m = self.reversals.size
         reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
         reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise

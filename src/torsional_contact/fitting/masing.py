@@ -17,7 +17,8 @@ is the far end of the same branches, with no special case (the spinning state er
 memory because its torque exceeds every remembered one; so does the long branch here).
 
 ``walk`` does the bookkeeping on the turning-point twists; ``torque_along`` evaluates the
-torque and its slope dT/dtheta at every sample.  ``tests/test_fit.py`` checks both against the
+torque and its slope dT/dtheta at every sample (``pieces`` tabulates, once per walk, what it looks
+up for each sample: its piece's origin, factor and direction).  ``tests/test_fit.py`` checks both against the
 torque-driven ``histories.analyse_signal`` of the same history.
 """
 
@@ -27,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Walk", "walk", "Turning", "turning_torques", "torque_along"]
+__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along"]
 
 
 @dataclass(frozen=True)
@@ -109,10 +110,11 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
     gain = path.g[last] * path.direction[last]
     at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
-    increments = gain * at_turning[0]
-    turning = np.empty(n_turning)
-    for j in range(n_turning):
-        turning[j] = (turning[o[j]] if o[j] >= 0 else 0.0) + increments[j]
+    increments = (gain * at_turning[0]).tolist()
+    turning_list = []  # Python floats: the same IEEE additions as on the array, without its per-element overhead
+    for j, origin_j in enumerate(o.tolist()):
+        turning_list.append((turning_list[origin_j] if origin_j >= 0 else 0.0) + increments[j])
+    turning = np.array(turning_list, dtype=float)
     if not jacobian:
         return Turning(turning, None)
     # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
@@ -128,8 +130,50 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     return Turning(turning, grad_turning)
 
 
+@dataclass(frozen=True)
+class Pieces:
+    """What ``torque_along`` looks up for a sample, tabulated once for a ``Walk`` and its ``Turning`` torques.
+
+    ``table`` rows, one column per piece: the twist of its origin (0 on the virgin curve), the torque there (0), its
+    direction over its factor d / g and d g (d = +-1 and g = 1 or 2, so that multiplying by d / g is the same
+    operation as multiplying by d and dividing by g, rounding included).  Per segment: ``first`` piece,
+    ``heading`` (its direction), and for m = 0, 1, ... ``thresholds[m]``, heading times the end of its piece m
+    where the segment has a piece m + 1 after it, else +inf: a sample past it (in the segment's direction) lies on
+    a later piece.
+    """
+
+    table: np.ndarray
+    first: np.ndarray
+    heading: np.ndarray
+    thresholds: tuple
+
+
+def pieces(path: Walk, turning: Turning) -> Pieces:
+    """The lookup tables of ``path`` for ``torque_along`` (``Pieces``)."""
+    known = path.origin >= 0
+    where = np.maximum(path.origin, 0)
+    origin_twist = np.where(known, path.targets[where], 0.0)
+    origin_torque = np.where(known, turning.torque[where], 0.0) if path.targets.size > 1 else np.zeros(known.size)
+    table = np.vstack([origin_twist, origin_torque, path.direction / path.g, path.direction * path.g])
+    heading = path.direction[path.first]
+    thresholds = tuple(np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
+                                np.inf) for m in range(int(path.count.max()) - 1))
+    return Pieces(table, path.first, heading, thresholds)
+
+
+def _piece_of(lookup: Pieces, u, segment):
+    """The piece of every sample: the first of its segment, plus the piece ends it has passed (piece ends increase
+    along the segment)."""
+    piece = lookup.first[segment]
+    if lookup.thresholds:
+        ahead = lookup.heading[segment] * u
+        for threshold in lookup.thresholds:
+            piece = piece + (ahead > threshold[segment])
+    return piece
+
+
 def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobian: bool = False,
-                 curvature: bool = False, turning: Turning | None = None):
+                 curvature: bool = False, turning: Turning | None = None, lookup: Pieces | None = None):
     """Torque and slope dT/du at twists ``u`` (from the virgin state) of samples on segments ``segment``.
 
     ``branch(v)`` returns (F(v), F'(v)) of the skeleton, odd in v, and with ``jacobian`` also the
@@ -137,7 +181,9 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     instead (then the fourth value returned is d^2T/du^2 = d F''(v) / g at every sample).  A sample
     beyond either end of its segment is evaluated on the nearest piece, continued (the branch's own
     smooth continuation: a noisy sample next to a turning point).  ``turning``: the walk's
-    ``turning_torques`` if already known (with their gradient when ``jacobian``).
+    ``turning_torques`` if already known (with their gradient when ``jacobian``); ``lookup``: its ``pieces``
+    (made from ``turning``) if already known.  ``u`` and ``segment`` may have any (common) shape without
+    ``jacobian``; with it they are 1-d.
 
     Returns (torque, slope, turning-point torques), and with ``jacobian`` the derivatives of the
     torque at every sample (n, q + 1 + M) with respect to the skeleton's parameters, the twist of
@@ -147,32 +193,23 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     n_turning = path.targets.size - 1
     if turning is None or (jacobian and turning.gradient is None):
         turning = turning_torques(path, branch, jacobian)
-    # the piece of every sample: the first of its segment, plus the piece ends it has passed
-    start = path.first[segment]
-    piece = start
-    extra = int(path.count.max()) - 1
-    if extra:
-        heading = path.direction[start]  # every piece of a segment has its direction
-        count = path.count[segment]
-        piece = start.copy()
-        for m in range(extra):  # piece ends increase along the segment
-            end = path.end[np.minimum(start + m, path.end.size - 1)]
-            piece += (count > m + 1) & (heading * u > heading * end)
-    origin = path.origin[piece]
-    d, g = path.direction[piece], path.g[piece]
-    known = origin >= 0
-    where = np.maximum(origin, 0)
-    u_sample_origin = np.where(known, path.targets[where], 0.0)
-    values = branch(d * (u - u_sample_origin) / g)
-    t_origin = np.where(known, turning.torque[where], 0.0) if n_turning else 0.0
-    torque = t_origin + d * g * values[0]
+        lookup = None
+    if lookup is None:
+        lookup = pieces(path, turning)
+    piece = _piece_of(lookup, u, segment)
+    origin_twist, origin_torque, shrink, gain = np.take(lookup.table, piece, axis=1)
+    values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
+    torque = origin_torque + gain * values[0]
     if curvature:
-        return torque, values[1], turning.torque, d * values[2] / g
+        return torque, values[1], turning.torque, values[2] * shrink
     if not jacobian:
         return torque, values[1], turning.torque
+    origin = path.origin[piece]
+    known = origin >= 0
+    where = np.maximum(origin, 0)
     q = values[2].shape[1]
     columns = q + 1 + n_turning
     jac = turning.gradient[where] * known[:, None] if n_turning else np.zeros((u.size, columns))
-    jac[:, :q] += (d * g)[:, None] * values[2]
+    jac[:, :q] += gain[:, None] * values[2]
     jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
     return torque, values[1], turning.torque, jac

@@ -35,6 +35,7 @@ minimum: ``BetterMinimum`` carries the point, and the caller starts again from t
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -84,8 +85,8 @@ class Constraint:
     value: float
 
     def free(self, size: int) -> np.ndarray:
-        fixed = {"slip_torque": 0, "compliance": 2, "product": 1}[self.kind]
-        return np.delete(np.arange(size), fixed)
+        """Indices of the free parameters q in p (read-only)."""
+        return _free_indices(self.kind, size)
 
     def expand(self, q: np.ndarray, size: int) -> np.ndarray:
         p = np.empty(size)
@@ -118,6 +119,14 @@ class Constraint:
 
     def of(self, p) -> float:
         return float(p[0] if self.kind == "slip_torque" else p[2] if self.kind == "compliance" else p[1] * p[2])
+
+
+@functools.lru_cache(maxsize=64)
+def _free_indices(kind: str, size: int) -> np.ndarray:
+    fixed = {"slip_torque": 0, "compliance": 2, "product": 1}[kind]
+    free = np.delete(np.arange(size), fixed)
+    free.flags.writeable = False
+    return free
 
 
 def fit(model: LoopModel, start, lower, upper, constraint: Constraint | None = None, kappa_max: float = np.inf):

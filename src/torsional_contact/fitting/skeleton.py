@@ -36,7 +36,7 @@ from .. import asymptotics
 from ..criteria import GROSS_SLIP_TORQUE
 from ..curves import monotonic_curves
 
-__all__ = ["Skeleton", "skeleton_nodes"]
+__all__ = ["Skeleton", "skeleton_nodes", "skeleton_of"]
 
 _NODES_PER_PANEL = 12
 #: Extra nodes per unit width in b (the table's panels above b = 0.26 are up to 0.24 wide).
@@ -75,6 +75,20 @@ def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return np.concatenate([[1.0], t]), np.concatenate([[0.0], omega]), np.concatenate([[0.0], slope])
 
 
+@functools.lru_cache(maxsize=1)
+def _padded_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``skeleton_nodes`` with the node x = 0 (T* = omega_m = omega_m' = 0) in front, and the steps of T*."""
+    t, omega, slope = (np.concatenate([[0.0], v]) for v in skeleton_nodes())
+    return t, omega, slope, np.diff(t)
+
+
+@functools.lru_cache(maxsize=8)
+def skeleton_of(kappa: float) -> Skeleton:
+    """``Skeleton(kappa)``, the same object for the last few kappa asked for (a fit's starting grid and its
+    constrained fits revisit them)."""
+    return Skeleton(kappa)
+
+
 class Skeleton:
     """T*(x), dT*/dx and omega_m(x) of the inverted skeleton x = T* + kappa omega_m(T*) (module docstring).
 
@@ -88,25 +102,38 @@ class Skeleton:
         if not kappa >= 0.0:
             raise ValueError(f"kappa must be >= 0, got {kappa!r}")
         self.kappa = float(kappa)
-        t, omega, slope = skeleton_nodes()
+        # the nodes with the node at x = 0 (T* = 0, slope 1) in front: the cubic on [0, 1] is T* = x exactly (stick)
+        t, omega, slope, t_steps = _padded_nodes()
         x = t + self.kappa * omega
-        keep = np.concatenate([[True], np.diff(np.maximum.accumulate(x)) > 0])  # strictly increasing abscissae
-        t, omega, slope, x = t[keep], omega[keep], slope[keep], x[keep]
-        denominator = 1.0 + self.kappa * slope
-        # a node at x = 0 (T* = 0, slope 1): the cubic on [0, 1] is T* = x exactly (stick)
-        self._x = np.concatenate([[0.0], x])
-        self._t = np.concatenate([[0.0], t])
-        self._omega = np.concatenate([[0.0], omega])
-        self._t_slope = np.concatenate([[1.0], 1.0 / denominator])
-        self._omega_slope = np.concatenate([[0.0], slope / denominator])
+        x[0] = 0.0
+        h = np.diff(x)
+        if not (h[1:] > 0).all():  # keep strictly increasing abscissae (every node but where x rounds flat)
+            keep = np.concatenate([[True, True], np.diff(np.maximum.accumulate(x[1:])) > 0])
+            t, omega, slope, x = t[keep], omega[keep], slope[keep], x[keep]
+            h, t_steps = np.diff(x), np.diff(t)
+        denominator = 1.0 + self.kappa * slope  # 1 at x = 0
+        self._x = x
+        self._t = t
+        self._omega = omega
+        self._t_slope = 1.0 / denominator
+        self._omega_slope = slope / denominator
+        self._h = h
         # each cubic in the power basis of dx = x - x_j: value + dx (c1 + dx (c2 + dx c3)), the last node's own
         # (constant) piece appended for the points beyond it
-        self._t_coefficients = self._power_basis(self._t, self._t_slope)
-        self._omega_coefficients = self._power_basis(self._omega, self._omega_slope)
+        self._t_coefficients = self._power_basis(self._t, self._t_slope, t_steps)
+        self._omega_table = None  # omega_m's cubics, formed on the first call with ``rotation``
+        # one row per quantity, one column per piece: the left node x_j, c0 .. c3 of T* and 2 c2 (exact), so that one
+        # gather fetches everything a point needs; a point's piece is the number of inner nodes x_1 .. x_{n-2} at or
+        # below |x| (the last piece continues beyond the last node)
+        self._table = np.vstack([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
+        self._inner = self._x[1:-1]
+        self._last = float(self._x[-1])
 
-    def _power_basis(self, value, slope):
-        h = np.diff(self._x)
-        secant = np.diff(value) / h
+    def _power_basis(self, value, slope, steps=None):
+        """(c0, c1, c2, c3) of the cubic Hermite pieces of ``value`` with ``slope`` at the nodes (``steps``: the
+        differences of ``value`` if known)."""
+        h = self._h
+        secant = (np.diff(value) if steps is None else steps) / h
         c2 = (3.0 * secant - 2.0 * slope[:-1] - slope[1:]) / h
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
@@ -120,23 +147,30 @@ class Skeleton:
         """
         x = np.asarray(x, dtype=float)
         a = np.abs(x)
-        nodes = self._x
-        last = nodes[-1]
-        j = np.minimum(np.searchsorted(nodes, a, side="right") - 1, nodes.size - 2)
-        dx = np.minimum(a, last) - nodes[j]
-        c0, c1, c2, c3 = (c[j] for c in self._t_coefficients)
+        last = self._last
+        j = np.searchsorted(self._inner, a, side="right")  # the piece: min(last node index, pieces - 1)
+        nodes, c0, c1, c2, c3, c2_twice = np.take(self._table, j, axis=1)
+        dx = np.minimum(a, last) - nodes
         t = c0 + dx * (c1 + dx * (c2 + dx * c3))
         beyond = a > last
+        is_beyond = bool(beyond.any())
         # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
-        slope = np.where(beyond, 0.0, c1 + dx * (2.0 * c2 + 3.0 * dx * c3))
+        slope = c1 + dx * (c2_twice + 3.0 * dx * c3)
+        if is_beyond:
+            slope = np.where(beyond, 0.0, slope)
         sign = np.sign(x)
         if curvature:
-            return sign * t, slope, sign * np.where(beyond, 0.0, 2.0 * c2 + 6.0 * dx * c3)
+            second = c2_twice + 6.0 * dx * c3
+            if is_beyond:
+                second = np.where(beyond, 0.0, second)
+            return sign * t, slope, sign * second
         if not rotation:
             return sign * t, slope
-        c0, c1, c2, c3 = (c[j] for c in self._omega_coefficients)
+        if self._omega_table is None:
+            self._omega_table = np.vstack(self._power_basis(self._omega, self._omega_slope))
+        c0, c1, c2, c3 = np.take(self._omega_table, j, axis=1)
         omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        if beyond.any():
+        if is_beyond:
             extra = (a - last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)
         return sign * t, slope, sign * omega
