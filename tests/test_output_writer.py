@@ -490,20 +490,22 @@ def test_provenance_writers_keep_their_signatures(tmp_path):
 
 def test_save_figure_through_the_writer(tmp_path, monkeypatch):
     monkeypatch.syspath_prepend(str(ROOT / "workflow" / "scripts"))  # the workflow's figure helpers
-    from _plotting import plt, save_figure
+    import matplotlib.pyplot as plt
+    from _plotting import save_figure, subplots
 
+    open_before = plt.get_fignums()
     (tmp_path / "figures").mkdir()
     link = tmp_path / "fig.pdf"
     link.symlink_to("figures/fig.pdf")
-    fig, ax = plt.subplots()
+    fig, ax = subplots()
     ax.plot([0, 1], [0, 1])
     save_figure(fig, link, tmp_path / "fig.png")
     assert link.is_symlink() and (tmp_path / "figures" / "fig.pdf").read_bytes().startswith(b"%PDF")
     assert (tmp_path / "fig.png").read_bytes().startswith(b"\x89PNG")
-    fig, ax = plt.subplots()
+    fig, ax = subplots()
     with pytest.raises(OutputError, match=r"^--pdf .*figures: is a directory$"):
         save_figure(fig, tmp_path / "figures")
-    assert not plt.get_fignums()  # closed even on failure
+    assert plt.get_fignums() == open_before  # the helper's figures are not pyplot's: none left open, even on failure
     assert leftovers(tmp_path) == []
 
 

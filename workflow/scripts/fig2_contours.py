@@ -6,7 +6,7 @@ truncated at the plot tolerance (default 1e-4 of f p0).
 
 
 import numpy as np
-from _plotting import figure_parser, method_options, plt, save_figure, use_style
+from _plotting import figure_parser, method_options, save_figure, subplots, use_style
 
 from torsional_contact import solve
 
@@ -37,7 +37,7 @@ def main():
         values = s.stress(rr, zz)[0 if a.quantity == "sigma_zt" else 1]
 
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(3.1, 2.8))  # printed at half the text width: fonts at nominal size
+    fig, ax = subplots(figsize=(3.1, 2.8))  # printed at half the text width: fonts at nominal size
     levels = 21
     filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
     ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)

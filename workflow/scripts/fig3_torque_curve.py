@@ -10,7 +10,7 @@ frame and the exit is marked with an arrow head.
 import io
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 #: Plotted T* range: slip onset to a little beyond spinning.
 T_RANGE = (0.98, 1.5)
@@ -31,7 +31,7 @@ def main():
         rows = "".join(line for line in handle if not line.startswith("#"))
     data = np.genfromtxt(io.StringIO(rows), delimiter=",", names=True)
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(4.4, 3.6))
+    fig, ax = subplots(figsize=(4.4, 3.6))
     ax.axvspan(4 / 3, T_RANGE[1], color="0.92", lw=0)
     ax.text(0.5 * (4 / 3 + T_RANGE[1]), 0.97, "above spinning:\nimpossible", ha="center", va="top", fontsize=7.5,
             color="0.35")

@@ -3,7 +3,7 @@
 
 
 import numpy as np
-from _plotting import figure_parser, method_label, method_options, plt, save_figure, use_style
+from _plotting import figure_parser, method_label, method_options, save_figure, subplots, use_style
 
 from torsional_contact import solve
 
@@ -22,7 +22,7 @@ def main():
 
     r = np.linspace(0.0, 1.0, a.n_points)
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(3.1, 2.45))  # printed at half the text width: fonts at nominal size
+    fig, ax = subplots(figsize=(3.1, 2.45))  # printed at half the text width: fonts at nominal size
     for b in a.stick_radii:
         s = solve(stick_radius=b, **method_options(a))
         if a.quantity == "traction":

@@ -7,7 +7,7 @@ setting (complete weak form, N = 145), when the data carry it.
 
 
 import numpy as np
-from _plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, save_figure, subplots, use_style
 
 
 def main():
@@ -16,7 +16,7 @@ def main():
     f5 = load_data(a.data)["fig5"]
     r = np.array(f5["radii"])
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(5.0, 3.9))  # printed at 0.8 of the text width
+    fig, ax = subplots(figsize=(5.0, 3.9))  # printed at 0.8 of the text width
     for torque, traction in zip(f5["stages"], f5["traction"], strict=True):
         style = "k-" if torque == 0 else "-"
         label = f"$T^* = {torque:g}$" + (" (residual)" if torque == 0 else "")

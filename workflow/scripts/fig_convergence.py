@@ -4,7 +4,7 @@ Abel-Fredholm method (node sweep); reads the benchmark JSON."""
 
 
 import numpy as np
-from _plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, rcParams, save_figure, subplots, use_style
 
 FLOOR = 1e-16  # errors at or below it (rounding level, exact zeros included) are drawn here, open markers
 
@@ -25,8 +25,8 @@ def main():
     a = p.parse_args()
     results = load_data(a.data)["results"]
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(6.3, 3.9))  # printed at the text width
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, (left, right) = subplots(1, 2, figsize=(6.3, 3.9))  # printed at the text width
+    colors = rcParams["axes.prop_cycle"].by_key()["color"]
     for result, color in zip(results, colors, strict=False):
         b = result["stick_radius"]
         for method, marker in (("complete", "o-"), ("published", "s:")):

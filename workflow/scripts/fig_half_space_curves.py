@@ -9,7 +9,7 @@ elastic compliance 3 pi T*/16, and phi - 3 pi T*/16 is the part due to slip.
 """
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.half_space import closed_form as hs
@@ -23,7 +23,7 @@ def main():
     b = np.linspace(0.0, 1.0, a.n_points)
     tau = np.linspace(0.0, 4 / 3, a.n_points)[1:-1]
     use_style(a.style)
-    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(7.2, 2.7))
+    fig, (left, middle, right) = subplots(1, 3, figsize=(7.2, 2.7))
     left.plot(b, curves.torque(b), label="cylinders")
     left.plot(b, hs.torque(b), "--", label="half-spaces")
     left.set_xlabel(r"stick radius $b/a$")

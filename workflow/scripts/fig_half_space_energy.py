@@ -8,7 +8,7 @@ f_fit / f solving kappa^2 W_hs(A/kappa) = W_cyl(A) (``half_space.comparison``).
 """
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.half_space import closed_form as hs
@@ -26,7 +26,7 @@ def main():
     w_hs = hs.dissipation_per_cycle(ranges)
     w_cyl = monotonic_curves().dissipation(above)
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 3.0))
+    fig, (left, right) = subplots(1, 2, figsize=(7.2, 3.0))
     left.loglog(ranges, w_hs, label="half-spaces")
     left.loglog(ranges, hs.SMALL_AMPLITUDE_COEFFICIENT * ranges**4, ":", label=r"$(27\pi^4/131072)\,A^4$")
     left.loglog(above, w_cyl, label=r"cylinders ($W = 0$ for $A \leq 2$)")

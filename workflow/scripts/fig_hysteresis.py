@@ -5,7 +5,7 @@ Units: omega in f p0 / mu; energy per cycle in (f p0)^2 a^3 / mu.  Reads the his
 """
 
 
-from _plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, save_figure, subplots, use_style
 
 
 def main():
@@ -14,7 +14,7 @@ def main():
     data = load_data(a.data)
     use_style(a.style)
     # three panels at the width of the text column (16 cm): the fonts print at their nominal size
-    fig, (loops, law, compliance) = plt.subplots(1, 3, figsize=(6.3, 2.9))
+    fig, (loops, law, compliance) = subplots(1, 3, figsize=(6.3, 2.9))
     for loop in data["loops"]:
         loops.plot(loop["rigid_rotation"], loop["torque"], label=f"$[{loop['t_min']:g}, {loop['t_max']:g}]$")
     loops.set_xlabel(r"rigid rotation $\omega\mu/f p_0$")

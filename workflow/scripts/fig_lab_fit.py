@@ -9,7 +9,7 @@ import json
 import warnings
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact import fit_loop
 from torsional_contact.io.lab_files import read_lab_columns
@@ -27,7 +27,7 @@ def main():
         warnings.simplefilter("error")  # a noise-limited fit would be a wrong figure: fail the job
         fit = fit_loop(torque, twist, radius=truth["radius"], normal_force=truth["normal_force"])
     use_style(a.style)
-    fig, (loop, residual) = plt.subplots(1, 2, figsize=(7.2, 3.0), gridspec_kw={"width_ratios": [1.4, 1]})
+    fig, (loop, residual) = subplots(1, 2, figsize=(7.2, 3.0), gridspec_kw={"width_ratios": [1.4, 1]})
     loop.plot(twist * 1e3, torque, ".", markersize=2, color="0.55", label="record")
     loop.plot(twist * 1e3, fit.fitted_torque, "-", linewidth=1.0, label="fitted model")
     loop.set_xlabel(r"twist $\theta$ [mrad]")

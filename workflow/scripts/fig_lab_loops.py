@@ -9,7 +9,7 @@ record's (notebooks/data/lab_loop.json).
 import json
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact import Specimen
 
@@ -23,7 +23,7 @@ def main():
     s = Specimen(radius=data["radius"], normal_force=data["normal_force"], friction=data["friction"],
                  shear_modulus=data["shear_modulus"])
     use_style(a.style)
-    fig, (loops, energy) = plt.subplots(1, 2, figsize=(7.2, 3.0))
+    fig, (loops, energy) = subplots(1, 2, figsize=(7.2, 3.0))
     phase = np.linspace(0.0, 2.0, 801)
     for amplitude in a.amplitudes:
         torque = amplitude * np.sin(2 * np.pi * phase)

@@ -11,7 +11,7 @@ record's (notebooks/data/lab_loop.json).
 import json
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact import Specimen
 from torsional_contact.curves import monotonic_curves
@@ -28,7 +28,7 @@ def main():
     onset = 0.5 * friction * force * radius
     spin = 2.0 / 3.0 * friction * force * radius
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(4.6, 3.4))
+    fig, ax = subplots(figsize=(4.6, 3.4))
     top = 1.15 * spin[-1]
     ax.fill_between(force, 0, onset, color="#d9ecd9", label="stick (shakedown)")
     ax.fill_between(force, onset, spin, color="#fde9c8", label="partial slip")

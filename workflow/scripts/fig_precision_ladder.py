@@ -2,7 +2,7 @@
 converged 30-digit solution over the stick radius (T*, omega, interface traction and slip), and
 the truth's own convergence in the number of Nystrom nodes; reads precision_ladder.json."""
 
-from _plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, rcParams, save_figure, subplots, use_style
 
 FLOOR = 1e-18  # exact zeros are drawn here, with open markers (said in the legend)
 CONVERGENCE_FLOOR = 1e-50  # the same in panel (c) (the truth carries ~45 digits)
@@ -25,8 +25,8 @@ def main():
     rows = data["double_fast"]
     b = [r["stick_radius"] for r in rows]
     use_style(a.style)
-    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(6.3, 3.7))  # printed at the text width
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, (left, middle, right) = subplots(1, 3, figsize=(6.3, 3.7))  # printed at the text width
+    colors = rcParams["axes.prop_cycle"].by_key()["color"]
     plot_errors(left, b, [r["torque_error"] for r in rows], "o-", r"$|\Delta T^*|$", colors[0])
     plot_errors(left, b, [r["rigid_rotation_error"] for r in rows], "s--", r"$|\Delta\omega|\,\mu/fp_0$", colors[1])
     plot_errors(middle, b, [r["traction_error"] for r in rows], "o-", r"max$_r\,|\Delta q|/fp_0$", colors[2])

@@ -13,7 +13,7 @@ Values outside a panel's range are drawn at its edge with a triangle marker.
 import warnings
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact import solve
 from torsional_contact.backends import Published
@@ -64,7 +64,7 @@ def main():
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
     ]
     use_style(a.style)
-    fig, axes = plt.subplots(2, 2, figsize=(6.3, 4.9), sharex=True)
+    fig, axes = subplots(2, 2, figsize=(6.3, 4.9), sharex=True)
     (slip_ax, trac_ax), (dslip_ax, dtrac_ax) = axes
     s_ref, q_ref = converged.slip(r), converged.traction(r)
     slip_range = (-0.08, 0.2)

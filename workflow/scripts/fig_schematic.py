@@ -2,7 +2,7 @@
 twisted by T (side view), and the interface: stick disc r < b, slip annulus b < r < a (plan view)."""
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, save_figure, subplots, use_style
 from matplotlib import patches
 
 
@@ -66,7 +66,7 @@ def main():
     p.add_argument("--stick-radius", type=float, required=True, help="b/a drawn in the plan view")
     a = p.parse_args()
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(6.0, 3.3), gridspec_kw={"width_ratios": [1.0, 1.1]})
+    fig, (left, right) = subplots(1, 2, figsize=(6.0, 3.3), gridspec_kw={"width_ratios": [1.0, 1.1]})
     side_view(left)
     plan_view(right, a.stick_radius)
     save_figure(fig, a.pdf, a.png)

@@ -7,7 +7,7 @@ shear).  Slip starts on tau = f sigma (T* = 1), the cylinders spin on tau = 4 f 
 
 
 import numpy as np
-from _plotting import figure_parser, plt, save_figure, use_style
+from _plotting import figure_parser, rcParams, save_figure, subplots, use_style
 
 from torsional_contact.criteria import von_mises_torque_limit
 
@@ -21,9 +21,9 @@ def main():
     normal_force = np.pi * sigma  # with a = k = 1
     tau_yield = 2 * von_mises_torque_limit(normal_force, 1.0, 1.0) / np.pi  # 2T/(pi a^3 k)
     use_style(a.style)
-    fig, ax = plt.subplots(figsize=(5.6, 3.0))  # printed at 0.9 of the text width
+    fig, ax = subplots(figsize=(5.6, 3.0))  # printed at 0.9 of the text width
     ax.plot(sigma, tau_yield, "k", lw=1.8, label="von Mises onset, eq. (6)")
-    for f, color in zip(a.friction, plt.rcParams["axes.prop_cycle"].by_key()["color"], strict=False):
+    for f, color in zip(a.friction, rcParams["axes.prop_cycle"].by_key()["color"], strict=False):
         ax.plot(sigma, f * sigma, color=color, label=f"slip onset $T^*=1$, $f = {f:g}$")
         ax.plot(sigma, 4 * f * sigma / 3, "--", color=color, label=f"spinning $T^*=4/3$, $f = {f:g}$")
     ax.set_xlim(0, 1.8)

@@ -2,7 +2,7 @@
 interface traction (units f p0), for each method; reads the benchmark JSON."""
 
 
-from _plotting import figure_parser, load_data, plt, save_figure, use_style
+from _plotting import figure_parser, load_data, save_figure, subplots, use_style
 
 STYLE = {"published": ("s:", "reconstructed printed scheme, N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm, node sweep"),
@@ -17,7 +17,7 @@ def main():
     results = data["results"]
     mid = results[len(results) // 2]
     use_style(a.style)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(6.3, 3.4))  # printed at the text width
+    fig, (left, right) = subplots(1, 2, figsize=(6.3, 3.4))  # printed at the text width
     for method, (marker, label) in STYLE.items():
         rows = [r for r in mid["rows"] if r["method"] == method]
         if not rows:
