@@ -65,8 +65,7 @@ from .special_mp import (
     bessel_ratio,
     expansion_terms,
     i2_excess,
-    integral_x_i1,
-    integral_x_i1_excess,
+    integral_x_i1_pair,
     sinh_excess,
     sinh_excess_matrix,
     tail_coefficients,
@@ -213,20 +212,28 @@ def spinning_tail(t, start: float, far: bool = True):
     """
     if start < asymptotic_threshold() - 1e-9:
         raise ValueError(f"start must be >= {asymptotic_threshold():.1f} at this precision, got {start!r}")
-    count = expansion_terms(start)
-    coefficients = tail_coefficients(count)
-    last = float(abs(flint.arb(coefficients[-1])) * flint.arb(start) ** (-count))
+    count, coefficients, last = _tail_setup(float(start), flint.ctx.prec)
     if last > 2.0 ** (-flint.ctx.prec + 10):
         warnings.warn(f"the Hankel expansion of E_1 at xi = {start} stops at {last:.1e}", AccuracyWarning, stacklevel=2)
     near = tail_integrals(1 - t, start, count)
     total = flint.arb(0)
     if far:
         for c, jn, jf in zip(coefficients, near, tail_integrals(1 + t, start, count), strict=True):
-            total += flint.arb(c) * (jn - jf)
+            total += c * (jn - jf)
     else:
         for c, jn in zip(coefficients, near, strict=True):
-            total += flint.arb(c) * jn
+            total += c * jn
     return total / (2 * flint.arb.pi()).sqrt()
+
+
+@functools.lru_cache(maxsize=64)
+def _tail_setup(start: float, prec: int) -> tuple:
+    """(count, the c_k as arb at ``prec`` bits, the last term's size) of ``spinning_tail`` at X = ``start``
+    (the same for every t: cached)."""
+    count = expansion_terms(start)
+    exact = tail_coefficients(count)
+    last = float(abs(flint.arb(exact[-1])) * flint.arb(start) ** (-count))
+    return count, tuple(flint.arb(c) for c in exact), last
 
 
 def load_profiles(c, xi):
@@ -235,15 +242,16 @@ def load_profiles(c, xi):
     for x in xi:
         cx = c * x
         inverse = 1 / (x * x)
-        full.append(integral_x_i1(cx) * inverse)
-        excess.append(integral_x_i1_excess(cx) * inverse)
+        value, value_excess = integral_x_i1_pair(cx)  # one series for both (bit for bit the separate ones)
+        full.append(value * inverse)
+        excess.append(value_excess * inverse)
     return full, excess
 
 
 @functools.lru_cache(maxsize=16)
 def _torque_rotation_cached(prec: int, digits: int):
     quadrature = xi_quadrature(1.0, digits)
-    ratio = bessel_ratio(quadrature.nodes)
+    ratio = _per_node("ratio", bessel_ratio, quadrature.nodes)  # its first panels are those of the solves
     total = flint.arb(0)
     for x, w, r in zip(quadrature.nodes, quadrature.weights, ratio, strict=True):
         total += w * r * i2_excess(x)

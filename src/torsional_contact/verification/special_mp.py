@@ -40,6 +40,7 @@ __all__ = [
     "sinh_excess_matrix",
     "integral_x_i1",
     "integral_x_i1_excess",
+    "integral_x_i1_pair",
     "tail_coefficients",
     "tail_integrals",
 ]
@@ -130,11 +131,11 @@ def bessel_ratio(xi):
 
 def _bessel_ratio_asymptotic(x):
     count = expansion_terms(float(x), 2.0)
-    kappa = _hankel(2, count)
+    kappa = _hankel_arb(2, count, flint.ctx.prec)
     inverse = 1 / x
     numerator, denominator = flint.arb(0), flint.arb(0)
     for k in range(count - 1, -1, -1):
-        c = flint.arb(kappa[k])
+        c = kappa[k]
         numerator = numerator * inverse + c
         denominator = denominator * inverse + (c if k % 2 == 0 else -c)
     return flint.arb.pi() * (-2 * x).exp() * numerator / denominator
@@ -182,48 +183,82 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None) -> flin
     """The matrix A(xi_k t_i) (len(points) x len(xi)) as an ``arb_mat``.
 
     ``method="series"``: the same values as ``sinh_excess`` element by element, bit for bit (the
-    branch is chosen from float copies and the product xi t is formed once).  The Nystrom solve
-    uses it, so the rounding of T* and omega (printed beyond the working precision in node
-    sweeps) does not depend on this function's speed.
-    ``method="cancel"``: sinh(x) - x below 1/2 too, at the midpoint of x t with the bits the
-    difference cancels (log2(6/x^2)) added to the working precision; equal to the series to
-    within rounding and several times faster where most products are small (the profiles at
-    small b).
+    branch is chosen from float copies and the product xi t is formed once): Taylor series in
+    Python below 1/2 (the slow path; kept as the independent check of the others).
+    ``method="sharp"``: Arb's sinh(x) - x, below 1/2 with the bits the difference cancels
+    (log2(6/x^2), in steps of 32) added to the working precision, the products xi t formed
+    exactly (at twice the working precision: nodes and points with zero radius, as the Nystrom
+    solve's are, give exact products).  A rigorous ball for any input (a point with a radius
+    keeps it, at the price of a wider ball below 1/2), as tight as the series' for exact input
+    and several times faster where most products are small (small b).  The Nystrom solve uses it.
+    ``method="cancel"``: the same at the midpoints of the products (a point's radius is dropped:
+    for the profiles, whose error estimate compares two solves); equal to the series to within
+    rounding.
     ``lengths``: row i holds A(xi_k t_i) for k < lengths[i] only and exact zeros beyond (for
     sums whose rest the caller bounds; default: every row full).
     """
-    if method not in ("series", "cancel"):
-        raise ValueError(f"method must be 'series' or 'cancel', got {method!r}")
+    if method not in ("series", "sharp", "cancel"):
+        raise ValueError(f"method must be 'series', 'sharp' or 'cancel', got {method!r}")
     points = list(points)
     n_xi = len(xi)
     if lengths is None:
         lengths = [n_xi] * len(points)
     elif len(lengths) != len(points) or any(not 0 <= k <= n_xi for k in lengths):
         raise ValueError(f"lengths must give one count in [0, {n_xi}] per point")
+    if method == "series":
+        return _sinh_excess_matrix_series(points, xi, lengths)
     xi_float = [float(x) for x in xi]
-    entries = []
     zero = flint.arb(0)
     prec = flint.ctx.prec
+    entries = []
     try:
         for t, length in zip(points, lengths, strict=True):
             t_float = float(t)
-            for x, x_float in zip(xi[:length], xi_float[:length], strict=True):
-                product = x * t
+            flint.ctx.prec = 2 * prec + 16  # exact products of two midpoints of at most prec bits
+            row = [x * t for x in xi[:length]]
+            if method == "cancel":
+                row = [p.mid() for p in row]
+            # groups: the products >= 1/2 at the working precision, the others by their cancelled bits
+            groups = {}
+            for k, x_float in enumerate(xi_float[:length]):
                 size = x_float * t_float
                 if size >= 0.5:
-                    entries.append(product.sinh() - product)
-                elif method == "series" or size == 0.0:
-                    entries.append(sinh_excess(product))
-                else:  # at the exact midpoint: the ball of x t would be inflated by the cancellation
-                    exact = product.mid()
-                    flint.ctx.prec = prec + math.ceil(2.0 * math.log2(2.5 / size)) + 8  # 6/x^2 < (2.5/x)^2
-                    value = exact.sinh() - exact
-                    flint.ctx.prec = prec
-                    entries.append(+value)
+                    extra = 0
+                elif size == 0.0:
+                    extra = -1
+                else:  # 6/x^2 < (2.5/x)^2: the bits sinh(x) - x cancels, rounded up to a multiple of 32
+                    extra = 32 * math.ceil((2.0 * math.log2(2.5 / size) + 8) / 32)
+                groups.setdefault(extra, []).append(k)
+            values = [zero] * length
+            for extra, members in groups.items():
+                if extra < 0:
+                    continue  # A(0) = 0 exactly
+                flint.ctx.prec = prec + extra
+                for k in members:
+                    product = row[k]
+                    values[k] = product.sinh() - product
+            flint.ctx.prec = prec
+            entries.extend(+v for v in values)
             entries.extend([zero] * (n_xi - length))
     finally:
         flint.ctx.prec = prec
     return flint.arb_mat(len(points), n_xi, entries)
+
+
+def _sinh_excess_matrix_series(points, xi, lengths) -> flint.arb_mat:
+    xi_float = [float(x) for x in xi]
+    entries = []
+    zero = flint.arb(0)
+    for t, length in zip(points, lengths, strict=True):
+        t_float = float(t)
+        for x, x_float in zip(xi[:length], xi_float[:length], strict=True):
+            product = x * t
+            if x_float * t_float >= 0.5:
+                entries.append(product.sinh() - product)
+            else:
+                entries.append(sinh_excess(product))
+        entries.extend([zero] * (len(xi) - length))
+    return flint.arb_mat(len(points), len(xi), entries)
 
 
 def integral_x_i1(x):
@@ -244,6 +279,15 @@ def integral_x_i1_excess(x):
     return _integral_x_i1_series(x, first=False)
 
 
+def integral_x_i1_pair(x):
+    """(F(x), F(x) - x^3/6), arb x >= 0: ``integral_x_i1`` and ``integral_x_i1_excess`` bit for bit,
+    from one power series (or one Hankel expansion) instead of two."""
+    if float(x) >= asymptotic_threshold():
+        full = _integral_x_i1_asymptotic(x)
+        return full, full - x**3 / 6
+    return _integral_x_i1_series_pair(x)
+
+
 def _integral_x_i1_series(x, first: bool):
     """sum_k x^(2k+3) / ((2k+3) 2^(2k+1) k! (k+1)!), from k = 0 or k = 1."""
     if float(x) == 0.0:
@@ -262,6 +306,35 @@ def _integral_x_i1_series(x, first: bool):
             return total
 
 
+def _integral_x_i1_series_pair(x):
+    """(F(x), F(x) - x^3/6) from one run of the power series: the same terms, two running sums.
+
+    Each sum stops where it would have alone (its last piece below 2^-(prec + 4) of itself), so both
+    are bit for bit those of separate runs (the sum with the first term stops no later).
+    """
+    if float(x) == 0.0:
+        return flint.arb(0), flint.arb(0)
+    x2 = x * x
+    term = x * x2 / 2  # x^3 / (2^1 0! 1!)
+    total_full = term / 3
+    total_excess = flint.arb(0)
+    limit = 2.0 ** (-flint.ctx.prec - 4)
+    full = None
+    k = 0
+    while True:
+        k += 1
+        term = term * x2 / (4 * k * (k + 1))
+        piece = term / (2 * k + 3)
+        piece_float = float(piece)
+        if full is None:
+            total_full += piece
+            if 2 * k > float(x) and piece_float <= limit * float(total_full):
+                full = total_full
+        total_excess += piece
+        if 2 * k > float(x) and piece_float <= limit * float(total_excess):
+            return (full if full is not None else total_full), total_excess
+
+
 def _integral_x_i1_asymptotic(x):
     """F(x) = exp(x) (2 pi x)^(-1/2) x sum_k phi_k x^-k (large x)."""
     coefficients = _f_coefficients(expansion_terms(float(x)))
@@ -275,12 +348,24 @@ def _integral_x_i1_asymptotic(x):
 # --------------------------------------------------------------------------- Hankel-type expansions
 
 
-def _hankel(nu: int, count: int):
-    """a_k(nu) = prod_{j=1..k} (4 nu^2 - (2j - 1)^2) / (k! 8^k), k < count (DLMF 10.40), exact."""
+@functools.lru_cache(maxsize=64)
+def _hankel(nu: int, count: int) -> tuple:
+    """a_k(nu) = prod_{j=1..k} (4 nu^2 - (2j - 1)^2) / (k! 8^k), k < count (DLMF 10.40), exact (cached)."""
     out = [flint.fmpq(1)]
     for k in range(1, count):
         out.append(out[-1] * flint.fmpq(4 * nu * nu - (2 * k - 1) ** 2, 8 * k))
-    return out
+    return tuple(out)
+
+
+@functools.lru_cache(maxsize=256)
+def _hankel_arb(nu: int, count: int, prec: int) -> tuple:
+    """``_hankel(nu, count)`` rounded to arb at ``prec`` bits (the working precision of the caller; cached)."""
+    saved = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        return tuple(flint.arb(a) for a in _hankel(nu, count))
+    finally:
+        flint.ctx.prec = saved
 
 
 @functools.lru_cache(maxsize=8)
