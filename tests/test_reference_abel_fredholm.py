@@ -351,6 +351,50 @@ def test_sharp_sinh_excess_contains_the_exact_value_and_overlaps_the_series(digi
                         assert balls[i, k].contains(mp_to_arb(exact))
 
 
+@pytest.mark.parametrize(("rate", "digits", "layout"), [(0.1, 30, (0.25, 16.0)), (0.5, 49, (0.3, 11.0)),
+                                                        (0.02, 54, (0.25, 16.0))])
+def test_factored_exponentials_against_direct_sinh(rate, digits, layout):
+    """The rows of A(xi t) over runs of equal panels, exp(xi t) = exp(c_p t) exp(d_j t) as outer
+    products (``blocks``), against the direct Arb sinh of every entry (no blocks) and, for a few
+    entries, mpmath's sinh(x) - x of the exact product at three times the digits: the quadrature's
+    nodes are exactly c_p + d_j (no tolerance); the balls overlap the direct ones and contain the
+    exact values; the radii are at most 2^(8 - prec) relative (as for ``sharp``: a few roundings
+    times sinh(x)/A(x) <= 25 at x >= 1/2) and at most 4 times the direct ones (measured below 2).
+    Both methods, exact and wide points, and rows cut short by ``lengths``."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        quadrature = kernels_mp.xi_quadrature(rate, digits, *layout)
+        xi, blocks = quadrature.nodes, quadrature.blocks
+        assert blocks and sum(len(mids) * len(offsets) for _, mids, offsets in blocks) > len(xi) / 4
+        with mpmath.workdps(3 * digits):
+            for start, mids, offsets in blocks:
+                for p, c in enumerate(mids):
+                    for j, d in enumerate(offsets):
+                        assert _mp(xi[start + p * len(offsets) + j]) == _mp(c) + _mp(d)
+        points = [flint.arb(t).mid() for t in ("0.004", "0.05", "0.5", "0.98", "1")]
+        points.append(flint.arb("0.7") + flint.arb(0, flint.arb(2) ** (-prec)))
+        lengths = [len(xi)] * (len(points) - 1) + [blocks[0][0] + len(blocks[0][2]) + 3]
+        in_blocks = [k for start, mids, offsets in blocks for k in range(start, start + len(mids) * len(offsets))]
+        for method in ("sharp", "cancel"):
+            factored = special_mp.sinh_excess_matrix(points, xi, method=method, lengths=lengths, blocks=blocks)
+            direct = special_mp.sinh_excess_matrix(points, xi, method=method, lengths=lengths)
+            for i, t in enumerate(points):
+                for k in range(len(xi)):
+                    value, reference = factored[i, k], direct[i, k]
+                    assert value.overlaps(reference)
+                    if k >= lengths[i]:
+                        assert value == 0
+                    elif t.rad() == 0 or method == "cancel":
+                        assert value.rad() <= abs(value.mid()) * flint.arb(2) ** (8 - prec)
+                        assert value.rad() <= 4 * reference.rad() + abs(value.mid()) * flint.arb(2) ** (-prec)
+            for i, t in enumerate(points[:-1]):
+                for k in in_blocks[:: max(1, len(in_blocks) // 7)]:
+                    with mpmath.workdps(3 * digits):
+                        product = _mp(xi[k]) * _mp(t)
+                        exact = mpmath.sinh(product) - product
+                        assert factored[i, k].contains(mp_to_arb(exact))
+
+
 @pytest.mark.parametrize("x", ["0", "1e-9", "0.3", "7", "60", "82", "150", "400"])
 @pytest.mark.parametrize("digits", [30, 49])
 def test_integral_x_i1_pair_against_the_series(x, digits):

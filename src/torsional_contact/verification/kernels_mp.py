@@ -25,7 +25,8 @@ the integrands are analytic on (0, inf) with an xi^4 ln(xi) end-point singularit
 ``xi_quadrature``: the first panel [0, 1/4] is mapped by xi = u^q / 4 with q = 4 up to
 48 working digits, ceil(d/12) above (the singular part becomes u^(5q-1) ln u), then
 Gauss-Legendre panels [1/4, 1/2], [1/2, 1], ... doubling
-until their width reaches 16 / rate, then panels of that width, up to
+until their width reaches 16 / rate (rounded to 16 significant bits: the edges are exact sums
+and the capped panels share their node offsets, ``XiQuadrature.blocks``), then panels of that width, up to
 (d ln 10 + 12) / rate, where rate is the slowest exponential decay of the integrands
 (2 - t - s for (M1), 2 - t - c for (M2), 1 for (M3)) and d the working digits.  The
 nodes per panel grow linearly with d (``panel_nodes``).
@@ -132,6 +133,10 @@ class XiQuadrature:
         Slowest exponential decay rate the quadrature resolves.
     digits : int
         Working digits the quadrature was built for.
+    blocks : tuple of (int, tuple of arb, tuple of arb)
+        Runs of at least ``MIN_BLOCK_PANELS`` panels of equal width (the capped ones): (index of
+        their first node, the panels' midpoints c_p, the offsets d_j), their nodes being exactly
+        c_p + d_j in that order (``special_mp.sinh_excess_matrix`` factors exp(xi t) over them).
     """
 
     nodes: tuple
@@ -140,12 +145,18 @@ class XiQuadrature:
     n_below: int
     decay_rate: float
     digits: int
+    blocks: tuple = ()
+
+
+#: Fewest panels of equal width that ``XiQuadrature.blocks`` lists (fewer gain nothing by factoring).
+MIN_BLOCK_PANELS = 3
 
 
 def _panel_edges(decay_rate: float, digits: int, first_panel: float, width_decays: float):
     end = (digits * math.log(10.0) + EXTRA_DECAYS) / decay_rate
     x_needed = asymptotic_threshold(precision_bits(digits))
-    width_cap = width_decays / decay_rate
+    mantissa, exponent = math.frexp(width_decays / decay_rate)  # 16 significant bits: the edges stay exact
+    width_cap = math.ldexp(round(math.ldexp(mantissa, 16)), exponent - 16)  # sums, the capped widths equal
     edges = [0.0, first_panel]
     while edges[-1] < max(end, x_needed):
         width = edges[-1] if edges[-1] < width_cap else width_cap
@@ -181,15 +192,26 @@ def xi_quadrature(
         u = (xj + 1) / 2
         nodes.append(first * u**power)
         weights.append(first * power * u ** (power - 1) * wj / 2)
+    nodes = [v.mid() for v in nodes]  # exact binary nodes: functions of them stay sharp
+    runs = []  # [width, index of the first node, midpoints, offsets] of panels of equal width
+    prec = flint.ctx.prec
     for lo, hi in zip(edges[1:-1], edges[2:], strict=True):
         lo_exact, hi_exact = flint.arb(lo), flint.arb(hi)  # exact: no float rounding of hi + lo
         half, mid = (hi_exact - lo_exact) / 2, (hi_exact + lo_exact) / 2
-        nodes.extend(mid + half * xj for xj in x)
+        offsets = [(half * xj).mid() for xj in x]
+        flint.ctx.prec = prec + 64  # c + d exactly (no rounding: the nodes are c_p + d_j, shared d_j)
+        nodes.extend(mid + d for d in offsets)
+        flint.ctx.prec = prec
         weights.extend(half * wj for wj in w)
+        if runs and runs[-1][0] == hi - lo:
+            runs[-1][2].append(mid)
+        else:
+            runs.append([hi - lo, len(nodes) - len(x), [mid], offsets])
+    blocks = tuple((first_index, tuple(mids), tuple(offsets)) for _, first_index, mids, offsets in runs
+                   if len(mids) >= MIN_BLOCK_PANELS)
     n_first = first_panel_nodes(digits)
     n_below = n_first + sum(1 for e_lo in edges[1:-1] if e_lo < start) * len(x)  # nodes below X
-    nodes = tuple(x.mid() for x in nodes)  # exact binary nodes: functions of them stay sharp
-    return XiQuadrature(nodes, tuple(weights), start, n_below, float(decay_rate), int(digits))
+    return XiQuadrature(tuple(nodes), tuple(weights), start, n_below, float(decay_rate), int(digits), blocks)
 
 
 # --------------------------------------------------------------------------- (M1)-(M4)
@@ -340,6 +362,7 @@ class _XiLayer:
     side_full: tuple
     side_excess: tuple
     tail_start: float
+    blocks: tuple = ()
 
 
 @functools.lru_cache(maxsize=8)
@@ -356,7 +379,8 @@ def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, wid
     zero = flint.arb(0)
     side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
     side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
-    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
+    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start,
+                    quadrature.blocks)
 
 
 def xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:

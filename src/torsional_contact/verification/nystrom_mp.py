@@ -248,6 +248,7 @@ class AbelFredholmState:
     density: tuple = field(repr=False)
     seconds: float = 0.0
     _xi: tuple = field(repr=False, default=())
+    _xi_blocks: tuple = field(repr=False, default=())
     _interpolant: tuple = field(repr=False, default=())
     _tail_start: float = field(repr=False, default=0.0)
 
@@ -286,7 +287,7 @@ class AbelFredholmState:
         rigorous bound on the rest is added to the ball (``kernels_mp.xi_sum_truncation``).
         """
         lengths, rests = xi_sum_truncation(t_points, self._xi, self._profile_a)
-        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths)
+        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths, blocks=self._xi_blocks)
         part_a = [value + flint.arb(0, rest) if rest is not None else value
                   for value, rest in zip(_entries(a_matrix * _column(self._profile_a)), rests, strict=True)]
         total_y = sum(self._profile_y, flint.arb(0))
@@ -480,7 +481,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
 
         # A(xi_k t_i) at the nodes and at t = b; weighted transpose for the products
         points = t + [b]
-        a_points = sinh_excess_matrix(points, xi, method="sharp")
+        a_points = sinh_excess_matrix(points, xi, method="sharp", blocks=layer.blocks)
         a_entries = a_points.entries()  # row-major: A(xi_k t_j) at j * len(xi) + k
         n_xi = len(xi)
         weighted = flint.arb_mat(n_xi, n, [scale[k] * a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
@@ -519,6 +520,6 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-        seconds=time.perf_counter() - start, _xi=xi, _interpolant=interpolant,
+        seconds=time.perf_counter() - start, _xi=xi, _xi_blocks=layer.blocks, _interpolant=interpolant,
         _tail_start=tail_start,
     )
