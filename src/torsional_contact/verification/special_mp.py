@@ -236,8 +236,9 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
                 down_mid, down_offset = [1 / v for v in up_mid], [1 / v for v in up_offset]
                 growth = flint.arb_mat(len(mids), 1, up_mid) * flint.arb_mat(1, len(offsets), up_offset)
                 decay = flint.arb_mat(len(mids), 1, down_mid) * flint.arb_mat(1, len(offsets), down_offset)
-                block = ((growth - decay) / 2 - xi_block * t).entries()  # rounded to the working precision below
+                half_difference, linear = (growth - decay) / 2, xi_block * t
                 flint.ctx.prec = prec
+                block = (half_difference - linear).entries()  # rounded once, to the working precision
                 stop = min(length - start, len(block))
                 values[start:start + stop] = block[:stop]
             flint.ctx.prec = 2 * prec + 80  # exact products of two midpoints (nodes have up to prec + 64 bits)
@@ -264,8 +265,11 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
                 for k in members:
                     product = row[k]
                     values[k] = product.sinh() - product
-            flint.ctx.prec = prec
-            entries.extend(+v for v in values)
+                flint.ctx.prec = prec
+                if extra > 0:  # rounded to the working precision (the others are at it)
+                    for k in members:
+                        values[k] = +values[k]
+            entries.extend(values)
             entries.extend([zero] * (n_xi - length))
     finally:
         flint.ctx.prec = prec
