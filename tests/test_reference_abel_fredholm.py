@@ -294,7 +294,8 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
     Taylor series to the rounding of both (2^-110 = 8e-34 per operation at 30 digits, a few dozen
     operations each: tolerance 10^-28 relative, more than ten times that), at tiny, small and large
     products; the E_1 tail without its J_k(1 + t) half differs by less than exp(-X), the bound in
-    ``spinning_tail``'s docstring."""
+    ``spinning_tail``'s docstring, and the solve's tail (that half replaced by a rigorous bound in
+    the ball's radius) contains the tail with it computed, its radius below exp(-X) plus rounding."""
     with working_digits(30):
         xi = [flint.arb(x).mid() for x in ("1e-12", "3e-4", "0.01", "0.2", "0.7", "3", "40")]
         points = [flint.arb(t).mid() for t in ("0.001", "0.37", "1")]
@@ -305,10 +306,17 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
                 exact, fast = _mp(series[i, k]), _mp(cancel[i, k])
                 assert_close(fast, exact, "30-digit rounding of two evaluations", rtol=mpmath.mpf(10) ** -28)
         start = kernels_mp.xi_quadrature(0.5, 30).asymptotic_start
-        for t in points:
-            full, short = kernels_mp.spinning_tail(t, start), kernels_mp.spinning_tail(t, start, far=False)
+        for t in [flint.arb(0), *points]:
+            full = kernels_mp.spinning_tail(t, start, far="exact")
+            short = kernels_mp.spinning_tail(t, start, far=False)
+            bounded = kernels_mp.spinning_tail(t, start)
             assert_within(float(abs(_mp(full) - _mp(short))), float(mpmath.exp(-start)),
                           "the J_k(1 + t) half's bound exp(-X) (spinning_tail)")
+            assert bounded.contains(full.mid())
+            assert_within(float(bounded.rad()), float(mpmath.exp(-start)) + 1e-30,
+                          "the J_k(1 + t) half's bound exp(-X) plus 30-digit rounding (spinning_tail)")
+        with pytest.raises(ValueError, match="far"):
+            kernels_mp.spinning_tail(points[0], start, far="bound")
     with pytest.raises(ValueError, match="method"):
         special_mp.sinh_excess_matrix(points, xi, method="taylor")
 
