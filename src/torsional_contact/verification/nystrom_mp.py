@@ -46,11 +46,13 @@ nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
 t 2^-(prec + 8) with a rigorous bound on that rest added to the ball (``kernels_mp.xi_sum_truncation``: a row
 t needs xi up to about prec ln 2 / (2 - b - t), the quadrature runs to prec ln 2 / (1 - b)), and
 the tail without its exp(-X)-small half; the
-solve keeps full rows and the full tail, and its rows are rigorous balls
+solve keeps full rows and that half of the tail as a rigorous bound in the ball's radius, and
+its rows are rigorous balls
 (``sinh_excess_matrix(method="sharp")``: Arb's sinh at raised precision on exact products; the
 Nystrom nodes t_j are rounded to their midpoints, exact binary numbers like the xi-nodes, so that
 the products are exact and the balls as tight as the Taylor series' was, at a fraction of its
-cost where xi t < 1/2, i.e. at small b).  The
+cost where xi t < 1/2, i.e. at small b; over runs of equal xi-panels exp(xi t) is factored,
+``kernels_mp.XiQuadrature.blocks``).  The
 per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``kernels_mp.xi_layer``):
 node sweeps and several radii in one process share them.
 """
