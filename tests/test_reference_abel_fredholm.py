@@ -32,7 +32,7 @@ from torsional_contact import solve  # noqa: E402 (after the skip)
 from torsional_contact.io.cli import main as cli_main  # noqa: E402 (after the skip)
 from torsional_contact.verification import kernels_mp, nystrom_mp, special_mp  # noqa: E402 (after the skip)
 from torsional_contact.verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm  # noqa: E402 (after the skip)
-from torsional_contact.verification.arbitrary_precision import arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
+from torsional_contact.verification.arbitrary_precision import arb_radius, arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
 from torsional_contact.verification.nystrom_mp import nodes_for_digits, solve_state  # noqa: E402 (after the skip)
 
 REFERENCE_RADII = ("0.1", "0.3", "0.5", "0.6", "0.7", "0.9")
@@ -294,7 +294,8 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
     Taylor series to the rounding of both (2^-110 = 8e-34 per operation at 30 digits, a few dozen
     operations each: tolerance 10^-28 relative, more than ten times that), at tiny, small and large
     products; the E_1 tail without its J_k(1 + t) half differs by less than exp(-X), the bound in
-    ``spinning_tail``'s docstring."""
+    ``spinning_tail``'s docstring, and the solve's tail (that half replaced by a rigorous bound in
+    the ball's radius) contains the tail with it computed, its radius below exp(-X) plus rounding."""
     with working_digits(30):
         xi = [flint.arb(x).mid() for x in ("1e-12", "3e-4", "0.01", "0.2", "0.7", "3", "40")]
         points = [flint.arb(t).mid() for t in ("0.001", "0.37", "1")]
@@ -305,12 +306,125 @@ def test_fast_sinh_excess_and_short_tail_within_rounding():
                 exact, fast = _mp(series[i, k]), _mp(cancel[i, k])
                 assert_close(fast, exact, "30-digit rounding of two evaluations", rtol=mpmath.mpf(10) ** -28)
         start = kernels_mp.xi_quadrature(0.5, 30).asymptotic_start
-        for t in points:
-            full, short = kernels_mp.spinning_tail(t, start), kernels_mp.spinning_tail(t, start, far=False)
+        for t in [flint.arb(0), *points]:
+            full = kernels_mp.spinning_tail(t, start, far="exact")
+            short = kernels_mp.spinning_tail(t, start, far=False)
+            bounded = kernels_mp.spinning_tail(t, start)
             assert_within(float(abs(_mp(full) - _mp(short))), float(mpmath.exp(-start)),
                           "the J_k(1 + t) half's bound exp(-X) (spinning_tail)")
+            assert bounded.contains(full.mid())
+            assert_within(float(bounded.rad()), float(mpmath.exp(-start)) + 1e-30,
+                          "the J_k(1 + t) half's bound exp(-X) plus 30-digit rounding (spinning_tail)")
+        with pytest.raises(ValueError, match="far"):
+            kernels_mp.spinning_tail(points[0], start, far="bound")
     with pytest.raises(ValueError, match="method"):
         special_mp.sinh_excess_matrix(points, xi, method="taylor")
+
+
+@pytest.mark.parametrize("digits", [30, 49])
+def test_sharp_sinh_excess_contains_the_exact_value_and_overlaps_the_series(digits):
+    """``sinh_excess_matrix(method="sharp")`` (the Nystrom solve's: Arb's sinh at raised precision on
+    exact products) against A(x) = sinh(x) - x of the exact product in mpmath at three times the
+    digits (an independent evaluation: its error is 10^-(3 digits) relative, far below the balls):
+    every ball contains it; it overlaps the Taylor series' ball; for exact input its radius is at
+    most 2^-(prec - 4) relative (a few roundings at the working precision: no cancellation left in
+    the ball) and at most 4 times the series' (as tight; measured below 1).  A point with a radius
+    keeps a rigorous (wider) ball that still contains the exact values of its midpoint's products
+    plus the point's own spread."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        xi = [flint.arb(x).mid() for x in ("1e-12", "3e-4", "0.01", "0.2", "0.7", "3", "40", "130")]
+        exact_points = [flint.arb(t).mid() for t in ("0", "1e-3", "0.0123456789", "0.37", "0.98", "1")]
+        sharp = special_mp.sinh_excess_matrix(exact_points, xi, method="sharp")
+        series = special_mp.sinh_excess_matrix(exact_points, xi)
+        for i, t in enumerate(exact_points):
+            for k, x in enumerate(xi):
+                value, reference = sharp[i, k], series[i, k]
+                with mpmath.workdps(3 * digits):
+                    product = _mp(x) * _mp(t)  # exact: both are binary numbers of < prec bits
+                    exact = mpmath.sinh(product) - product
+                    assert value.contains(mp_to_arb(exact))  # (mp_to_arb at 3 digits: the mpf kept whole)
+                assert value.overlaps(reference)
+                if exact != 0:
+                    assert value.rad() <= abs(value.mid()) * flint.arb(2) ** (8 - prec)
+                    assert value.rad() <= 4 * reference.rad() + abs(value.mid()) * flint.arb(2) ** (-prec)
+        wide = [flint.arb(t) + flint.arb(0, flint.arb(2) ** (-prec)) for t in ("0.001", "0.5")]
+        balls = special_mp.sinh_excess_matrix(wide, xi, method="sharp")
+        for i, t in enumerate(wide):
+            for k, x in enumerate(xi):
+                with mpmath.workdps(3 * digits):  # the ends mid -+ rad of the point, exactly
+                    for end in (_mp(t) - arb_radius(t), _mp(t) + arb_radius(t)):
+                        product = _mp(x) * end
+                        exact = mpmath.sinh(product) - product
+                        assert balls[i, k].contains(mp_to_arb(exact))
+
+
+@pytest.mark.parametrize(("rate", "digits", "layout"), [(0.1, 30, (0.25, 16.0)), (0.5, 49, (0.3, 11.0)),
+                                                        (0.02, 54, (0.25, 16.0))])
+def test_factored_exponentials_against_direct_sinh(rate, digits, layout):
+    """The rows of A(xi t) over runs of equal panels, exp(xi t) = exp(c_p t) exp(d_j t) as outer
+    products (``blocks``), against the direct Arb sinh of every entry (no blocks) and, for a few
+    entries, mpmath's sinh(x) - x of the exact product at three times the digits: the quadrature's
+    nodes are exactly c_p + d_j (no tolerance); the balls overlap the direct ones and contain the
+    exact values; the radii are at most 2^(8 - prec) relative (as for ``sharp``: a few roundings
+    times sinh(x)/A(x) <= 25 at x >= 1/2) and at most 4 times the direct ones (measured below 2).
+    Both methods, exact and wide points, and rows cut short by ``lengths``."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        quadrature = kernels_mp.xi_quadrature(rate, digits, *layout)
+        xi, blocks = quadrature.nodes, quadrature.blocks
+        assert blocks and sum(len(mids) * len(offsets) for _, mids, offsets in blocks) > len(xi) / 4
+        with mpmath.workdps(3 * digits):
+            for start, mids, offsets in blocks:
+                for p, c in enumerate(mids):
+                    for j, d in enumerate(offsets):
+                        assert _mp(xi[start + p * len(offsets) + j]) == _mp(c) + _mp(d)
+        points = [flint.arb(t).mid() for t in ("0.004", "0.05", "0.5", "0.98", "1")]
+        points.append(flint.arb("0.7") + flint.arb(0, flint.arb(2) ** (-prec)))
+        lengths = [len(xi)] * (len(points) - 1) + [blocks[0][0] + len(blocks[0][2]) + 3]
+        in_blocks = [k for start, mids, offsets in blocks for k in range(start, start + len(mids) * len(offsets))]
+        for method in ("sharp", "cancel"):
+            factored = special_mp.sinh_excess_matrix(points, xi, method=method, lengths=lengths, blocks=blocks)
+            direct = special_mp.sinh_excess_matrix(points, xi, method=method, lengths=lengths)
+            for i, t in enumerate(points):
+                for k in range(len(xi)):
+                    value, reference = factored[i, k], direct[i, k]
+                    assert value.overlaps(reference)
+                    if k >= lengths[i]:
+                        assert value == 0
+                    elif t.rad() == 0 or method == "cancel":
+                        assert value.rad() <= abs(value.mid()) * flint.arb(2) ** (8 - prec)
+                        assert value.rad() <= 4 * reference.rad() + abs(value.mid()) * flint.arb(2) ** (-prec)
+            for i, t in enumerate(points[:-1]):
+                for k in in_blocks[:: max(1, len(in_blocks) // 7)]:
+                    with mpmath.workdps(3 * digits):
+                        product = _mp(xi[k]) * _mp(t)
+                        exact = mpmath.sinh(product) - product
+                        assert factored[i, k].contains(mp_to_arb(exact))
+
+
+@pytest.mark.parametrize("x", ["0", "1e-9", "0.3", "7", "60", "82", "150", "400"])
+@pytest.mark.parametrize("digits", [30, 49])
+def test_integral_x_i1_pair_against_the_series(x, digits):
+    """``integral_x_i1_pair`` (the xi-layer's F and F - x^3/6: Arb's 2F3 in C below the asymptotic
+    threshold, ~83 at 30 and ~130 at 49 digits) against the power series in Python of
+    ``integral_x_i1``/``integral_x_i1_excess`` (an independent evaluation): the balls overlap, and
+    both carry at least prec - 12 bits relative (a few dozen roundings of positive terms, 6 bits, and
+    the series' own 2^-(prec + 4) truncation; the series carries 164 of 173 bits at 49 digits);
+    above the threshold both use the same Hankel expansion and agree exactly."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        point = flint.arb(x).mid()
+        full, excess = special_mp.integral_x_i1_pair(point)
+        for pair_value, single in ((full, special_mp.integral_x_i1(point)),
+                                   (excess, special_mp.integral_x_i1_excess(point))):
+            assert pair_value.overlaps(single)
+            if x == "0":
+                assert pair_value == 0 and single == 0
+                continue
+            assert pair_value.rel_accuracy_bits() >= prec - 12
+            if float(point) >= special_mp.asymptotic_threshold():
+                assert pair_value.mid() == single.mid()
 
 
 @pytest.mark.parametrize("b", ["0.5", "0.98"])

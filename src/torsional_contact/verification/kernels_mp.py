@@ -25,7 +25,8 @@ the integrands are analytic on (0, inf) with an xi^4 ln(xi) end-point singularit
 ``xi_quadrature``: the first panel [0, 1/4] is mapped by xi = u^q / 4 with q = 4 up to
 48 working digits, ceil(d/12) above (the singular part becomes u^(5q-1) ln u), then
 Gauss-Legendre panels [1/4, 1/2], [1/2, 1], ... doubling
-until their width reaches 16 / rate, then panels of that width, up to
+until their width reaches 16 / rate (rounded to 16 significant bits: the edges are exact sums
+and the capped panels share their node offsets, ``XiQuadrature.blocks``), then panels of that width, up to
 (d ln 10 + 12) / rate, where rate is the slowest exponential decay of the integrands
 (2 - t - s for (M1), 2 - t - c for (M2), 1 for (M3)) and d the working digits.  The
 nodes per panel grow linearly with d (``panel_nodes``).
@@ -65,8 +66,7 @@ from .special_mp import (
     bessel_ratio,
     expansion_terms,
     i2_excess,
-    integral_x_i1,
-    integral_x_i1_excess,
+    integral_x_i1_pair,
     sinh_excess,
     sinh_excess_matrix,
     tail_coefficients,
@@ -133,6 +133,10 @@ class XiQuadrature:
         Slowest exponential decay rate the quadrature resolves.
     digits : int
         Working digits the quadrature was built for.
+    blocks : tuple of (int, tuple of arb, tuple of arb)
+        Runs of at least ``MIN_BLOCK_PANELS`` panels of equal width (the capped ones): (index of
+        their first node, the panels' midpoints c_p, the offsets d_j), their nodes being exactly
+        c_p + d_j in that order (``special_mp.sinh_excess_matrix`` factors exp(xi t) over them).
     """
 
     nodes: tuple
@@ -141,12 +145,18 @@ class XiQuadrature:
     n_below: int
     decay_rate: float
     digits: int
+    blocks: tuple = ()
+
+
+#: Fewest panels of equal width that ``XiQuadrature.blocks`` lists (fewer gain nothing by factoring).
+MIN_BLOCK_PANELS = 3
 
 
 def _panel_edges(decay_rate: float, digits: int, first_panel: float, width_decays: float):
     end = (digits * math.log(10.0) + EXTRA_DECAYS) / decay_rate
     x_needed = asymptotic_threshold(precision_bits(digits))
-    width_cap = width_decays / decay_rate
+    mantissa, exponent = math.frexp(width_decays / decay_rate)  # 16 significant bits: the edges stay exact
+    width_cap = math.ldexp(round(math.ldexp(mantissa, 16)), exponent - 16)  # sums, the capped widths equal
     edges = [0.0, first_panel]
     while edges[-1] < max(end, x_needed):
         width = edges[-1] if edges[-1] < width_cap else width_cap
@@ -182,51 +192,80 @@ def xi_quadrature(
         u = (xj + 1) / 2
         nodes.append(first * u**power)
         weights.append(first * power * u ** (power - 1) * wj / 2)
+    nodes = [v.mid() for v in nodes]  # exact binary nodes: functions of them stay sharp
+    runs = []  # [width, index of the first node, midpoints, offsets] of panels of equal width
+    prec = flint.ctx.prec
     for lo, hi in zip(edges[1:-1], edges[2:], strict=True):
         lo_exact, hi_exact = flint.arb(lo), flint.arb(hi)  # exact: no float rounding of hi + lo
         half, mid = (hi_exact - lo_exact) / 2, (hi_exact + lo_exact) / 2
-        nodes.extend(mid + half * xj for xj in x)
+        offsets = [(half * xj).mid() for xj in x]
+        flint.ctx.prec = prec + 64  # c + d exactly (no rounding: the nodes are c_p + d_j, shared d_j)
+        nodes.extend(mid + d for d in offsets)
+        flint.ctx.prec = prec
         weights.extend(half * wj for wj in w)
+        if runs and runs[-1][0] == hi - lo:
+            runs[-1][2].append(mid)
+        else:
+            runs.append([hi - lo, len(nodes) - len(x), [mid], offsets])
+    blocks = tuple((first_index, tuple(mids), tuple(offsets)) for _, first_index, mids, offsets in runs
+                   if len(mids) >= MIN_BLOCK_PANELS)
     n_first = first_panel_nodes(digits)
     n_below = n_first + sum(1 for e_lo in edges[1:-1] if e_lo < start) * len(x)  # nodes below X
-    nodes = tuple(x.mid() for x in nodes)  # exact binary nodes: functions of them stay sharp
-    return XiQuadrature(nodes, tuple(weights), start, n_below, float(decay_rate), int(digits))
+    return XiQuadrature(tuple(nodes), tuple(weights), start, n_below, float(decay_rate), int(digits), blocks)
 
 
 # --------------------------------------------------------------------------- (M1)-(M4)
 
 
-def spinning_tail(t, start: float, far: bool = True):
+def spinning_tail(t, start: float, far=True):
     """(2/pi) int_X^inf [sinh(xi t) F(xi)/xi^2 - xi^2 t/6] rho d xi for 0 <= t <= 1, eq. (M4).
 
     ``start`` = X >= ``asymptotic_threshold()`` (a panel edge of the xi-quadrature).
     The neglected part (the xi^2 t/6 term and the exponentially small corrections of the
-    expansions) is below exp(-2 X) X^2 t.  ``far=False`` also leaves out the J_k(1 + t) terms
-    (the exp(-xi t) half of sinh), (2 pi X)^(-1/2) exp(-(1 + t) X) (1 + O(1/X)) < exp(-X) <
-    2^-prec e^-12 in all (c_0 = 1): half the cost, where the last bits need not be those of
-    the default (the profiles; the solve keeps them).
+    expansions) is below exp(-2 X) X^2 t.  The J_k(1 + t) terms (the exp(-xi t) half of sinh)
+    are below (2 pi)^(-1/2) sum_k |c_k| X^(-k-1/2)/(k + 1/2) exp(-(1 + t) X) (J_k(eps) <=
+    exp(-eps X) X^(-k-1/2)/(k + 1/2)), about (2 pi X)^(-1/2) 2 exp(-(1 + t) X) < exp(-X) <
+    2^-prec e^-12 in all (c_0 = 1).  ``far=True`` (the solve) adds that bound to the ball's radius
+    instead of computing them (half the cost; the ball stays rigorous, its midpoint moves by less
+    than e^-12 ulp); ``far="exact"`` computes them (the check of that bound); ``far=False`` leaves
+    them out (the profiles, where the last bits need not be those of the solve).
 
     Warns
     -----
     AccuracyWarning
         If the expansion's terms at X do not fall below 2^-prec before they diverge.
     """
+    if far not in (True, False, "exact"):
+        raise ValueError(f"far must be True, False or 'exact', got {far!r}")
     if start < asymptotic_threshold() - 1e-9:
         raise ValueError(f"start must be >= {asymptotic_threshold():.1f} at this precision, got {start!r}")
-    count = expansion_terms(start)
-    coefficients = tail_coefficients(count)
-    last = float(abs(flint.arb(coefficients[-1])) * flint.arb(start) ** (-count))
+    count, coefficients, last, far_sum = _tail_setup(float(start), flint.ctx.prec)
     if last > 2.0 ** (-flint.ctx.prec + 10):
         warnings.warn(f"the Hankel expansion of E_1 at xi = {start} stops at {last:.1e}", AccuracyWarning, stacklevel=2)
     near = tail_integrals(1 - t, start, count)
     total = flint.arb(0)
-    if far:
+    if far == "exact":
         for c, jn, jf in zip(coefficients, near, tail_integrals(1 + t, start, count), strict=True):
-            total += flint.arb(c) * (jn - jf)
+            total += c * (jn - jf)
     else:
         for c, jn in zip(coefficients, near, strict=True):
-            total += flint.arb(c) * jn
+            total += c * jn
+        if far:
+            total += flint.arb(0, (far_sum * (-(1 + t.lower()) * flint.arb(start)).exp()).upper())
     return total / (2 * flint.arb.pi()).sqrt()
+
+
+@functools.lru_cache(maxsize=64)
+def _tail_setup(start: float, prec: int) -> tuple:
+    """(count, the c_k as arb at ``prec`` bits, the last term's size, an upper bound of
+    sum_k |c_k| X^(-k-1/2)/(k + 1/2)) of ``spinning_tail`` at X = ``start`` (the same for every t: cached)."""
+    count = expansion_terms(start)
+    exact = tail_coefficients(count)
+    x = flint.arb(start)
+    last = float(abs(flint.arb(exact[-1])) * x ** (-count))
+    half = flint.arb(1) / 2
+    far_sum = sum((abs(flint.arb(c)) * x ** (-k - half) / (k + half) for k, c in enumerate(exact)), flint.arb(0))
+    return count, tuple(flint.arb(c) for c in exact), last, far_sum.upper()
 
 
 def load_profiles(c, xi):
@@ -235,15 +274,16 @@ def load_profiles(c, xi):
     for x in xi:
         cx = c * x
         inverse = 1 / (x * x)
-        full.append(integral_x_i1(cx) * inverse)
-        excess.append(integral_x_i1_excess(cx) * inverse)
+        value, value_excess = integral_x_i1_pair(cx)  # one series for both (bit for bit the separate ones)
+        full.append(value * inverse)
+        excess.append(value_excess * inverse)
     return full, excess
 
 
 @functools.lru_cache(maxsize=16)
 def _torque_rotation_cached(prec: int, digits: int):
     quadrature = xi_quadrature(1.0, digits)
-    ratio = bessel_ratio(quadrature.nodes)
+    ratio = _per_node("ratio", bessel_ratio, quadrature.nodes)  # its first panels are those of the solves
     total = flint.arb(0)
     for x, w, r in zip(quadrature.nodes, quadrature.weights, ratio, strict=True):
         total += w * r * i2_excess(x)
@@ -332,6 +372,7 @@ class _XiLayer:
     side_full: tuple
     side_excess: tuple
     tail_start: float
+    blocks: tuple = ()
 
 
 @functools.lru_cache(maxsize=8)
@@ -348,7 +389,8 @@ def _xi_layer_cached(b_key, prec: int, work_digits: int, first_panel: float, wid
     zero = flint.arb(0)
     side_full = [(full_1[k] if k < below else zero) - full_b[k] for k in range(len(xi))]
     side_excess = [(excess_1[k] if k < below else zero) - excess_b[k] for k in range(len(xi))]
-    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start)
+    return _XiLayer(tuple(xi), tuple(scale), tuple(side_full), tuple(side_excess), quadrature.asymptotic_start,
+                    quadrature.blocks)
 
 
 def xi_layer(b, work_digits: int, first_panel: float, width_decays: float) -> _XiLayer:

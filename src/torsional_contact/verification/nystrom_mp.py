@@ -46,8 +46,13 @@ nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
 t 2^-(prec + 8) with a rigorous bound on that rest added to the ball (``kernels_mp.xi_sum_truncation``: a row
 t needs xi up to about prec ln 2 / (2 - b - t), the quadrature runs to prec ln 2 / (1 - b)), and
 the tail without its exp(-X)-small half; the
-solve keeps the Taylor series and the full tail, so the rounding of T* and omega (printed
-beyond the working precision in node sweeps) does not depend on these shortcuts.  The
+solve keeps full rows and that half of the tail as a rigorous bound in the ball's radius, and
+its rows are rigorous balls
+(``sinh_excess_matrix(method="sharp")``: Arb's sinh at raised precision on exact products; the
+Nystrom nodes t_j are rounded to their midpoints, exact binary numbers like the xi-nodes, so that
+the products are exact and the balls as tight as the Taylor series' was, at a fraction of its
+cost where xi t < 1/2, i.e. at small b; over runs of equal xi-panels exp(xi t) is factored,
+``kernels_mp.XiQuadrature.blocks``).  The
 per-node xi-functions and the xi-layer of a (b, precision, layout) are cached (``kernels_mp.xi_layer``):
 node sweeps and several radii in one process share them.
 """
@@ -225,7 +230,8 @@ class AbelFredholmState:
     torque, rigid_rotation, rotation_constant : arb
         T* (F4), omega (F5), Omega = omega + BETA T* (F1).
     nodes, weights, density : tuple of arb
-        t_j = b cos(theta_j), weights for int_0^b dt, g(t_j) (F2).
+        t_j = b cos(theta_j) (rounded to its midpoint: an exact binary number), weights for
+        int_0^b dt, g(t_j) (F2).
     chebyshev : tuple of arb
         Coefficients of G = g + L in T_k(2 t^2/b^2 - 1) (for F6); computed on first use.
     seconds : float
@@ -244,6 +250,7 @@ class AbelFredholmState:
     density: tuple = field(repr=False)
     seconds: float = 0.0
     _xi: tuple = field(repr=False, default=())
+    _xi_blocks: tuple = field(repr=False, default=())
     _interpolant: tuple = field(repr=False, default=())
     _tail_start: float = field(repr=False, default=0.0)
 
@@ -282,7 +289,7 @@ class AbelFredholmState:
         rigorous bound on the rest is added to the ball (``kernels_mp.xi_sum_truncation``).
         """
         lengths, rests = xi_sum_truncation(t_points, self._xi, self._profile_a)
-        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths)
+        a_matrix = sinh_excess_matrix(t_points, self._xi, method="cancel", lengths=lengths, blocks=self._xi_blocks)
         part_a = [value + flint.arb(0, rest) if rest is not None else value
                   for value, rest in zip(_entries(a_matrix * _column(self._profile_a)), rests, strict=True)]
         total_y = sum(self._profile_y, flint.arb(0))
@@ -468,7 +475,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         two_over_pi = 2 / pi
         theta_x, theta_w = gauss_legendre(n)
         theta = [pi / 4 * (x + 1) for x in theta_x]
-        t = [b * th.cos() for th in theta]
+        t = [(b * th.cos()).mid() for th in theta]  # exact binary nodes (as the xi-nodes): A(xi t) stays sharp
         wt = [b * th.sin() * pi / 4 * w for th, w in zip(theta, theta_w, strict=True)]
         layer = xi_layer(b, work_digits, first_panel, width_decays)
         xi, scale, side_full, side_excess = layer.xi, layer.scale, layer.side_full, layer.side_excess
@@ -476,7 +483,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
 
         # A(xi_k t_i) at the nodes and at t = b; weighted transpose for the products
         points = t + [b]
-        a_points = sinh_excess_matrix(points, xi)
+        a_points = sinh_excess_matrix(points, xi, method="sharp", blocks=layer.blocks)
         a_entries = a_points.entries()  # row-major: A(xi_k t_j) at j * len(xi) + k
         n_xi = len(xi)
         weighted = flint.arb_mat(n_xi, n, [scale[k] * a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
@@ -515,6 +522,6 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),
-        seconds=time.perf_counter() - start, _xi=xi, _interpolant=interpolant,
+        seconds=time.perf_counter() - start, _xi=xi, _xi_blocks=layer.blocks, _interpolant=interpolant,
         _tail_start=tail_start,
     )

@@ -40,6 +40,7 @@ __all__ = [
     "sinh_excess_matrix",
     "integral_x_i1",
     "integral_x_i1_excess",
+    "integral_x_i1_pair",
     "tail_coefficients",
     "tail_integrals",
 ]
@@ -130,11 +131,11 @@ def bessel_ratio(xi):
 
 def _bessel_ratio_asymptotic(x):
     count = expansion_terms(float(x), 2.0)
-    kappa = _hankel(2, count)
+    kappa = _hankel_arb(2, count, flint.ctx.prec)
     inverse = 1 / x
     numerator, denominator = flint.arb(0), flint.arb(0)
     for k in range(count - 1, -1, -1):
-        c = flint.arb(kappa[k])
+        c = kappa[k]
         numerator = numerator * inverse + c
         denominator = denominator * inverse + (c if k % 2 == 0 else -c)
     return flint.arb.pi() * (-2 * x).exp() * numerator / denominator
@@ -178,52 +179,117 @@ def sinh_excess(x):
     return total
 
 
-def sinh_excess_matrix(points, xi, method: str = "series", lengths=None) -> flint.arb_mat:
+def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=()) -> flint.arb_mat:
     """The matrix A(xi_k t_i) (len(points) x len(xi)) as an ``arb_mat``.
 
     ``method="series"``: the same values as ``sinh_excess`` element by element, bit for bit (the
-    branch is chosen from float copies and the product xi t is formed once).  The Nystrom solve
-    uses it, so the rounding of T* and omega (printed beyond the working precision in node
-    sweeps) does not depend on this function's speed.
-    ``method="cancel"``: sinh(x) - x below 1/2 too, at the midpoint of x t with the bits the
-    difference cancels (log2(6/x^2)) added to the working precision; equal to the series to
-    within rounding and several times faster where most products are small (the profiles at
-    small b).
+    branch is chosen from float copies and the product xi t is formed once): Taylor series in
+    Python below 1/2 (the slow path; kept as the independent check of the others).
+    ``method="sharp"``: Arb's sinh(x) - x, below 1/2 with the bits the difference cancels
+    (log2(6/x^2), in steps of 32) added to the working precision, the products xi t formed
+    exactly (at twice the working precision: nodes and points with zero radius, as the Nystrom
+    solve's are, give exact products).  A rigorous ball for any input (a point with a radius
+    keeps it, at the price of a wider ball below 1/2), as tight as the series' for exact input
+    and several times faster where most products are small (small b).  The Nystrom solve uses it.
+    ``method="cancel"``: the same at the midpoints of the products (a point's radius is dropped:
+    for the profiles, whose error estimate compares two solves); equal to the series to within
+    rounding.
     ``lengths``: row i holds A(xi_k t_i) for k < lengths[i] only and exact zeros beyond (for
     sums whose rest the caller bounds; default: every row full).
+    ``blocks`` (``sharp`` and ``cancel``): runs of nodes xi = c_p + d_j (``kernels_mp.XiQuadrature.blocks``,
+    the nodes in that order).  Where a block's products are all >= 1/2, exp(xi t) = exp(c_p t) exp(d_j t)
+    is formed as an outer product in C from P + m exponentials instead of P m (and the same for
+    exp(-xi t)), then A = (exp(xi t) - exp(-xi t))/2 - xi t, at 8 bits more than the working
+    precision (the products of two rounded exponentials), rounded once: rigorous balls,
+    as tight as the direct sinh's.
     """
-    if method not in ("series", "cancel"):
-        raise ValueError(f"method must be 'series' or 'cancel', got {method!r}")
+    if method not in ("series", "sharp", "cancel"):
+        raise ValueError(f"method must be 'series', 'sharp' or 'cancel', got {method!r}")
     points = list(points)
     n_xi = len(xi)
     if lengths is None:
         lengths = [n_xi] * len(points)
     elif len(lengths) != len(points) or any(not 0 <= k <= n_xi for k in lengths):
         raise ValueError(f"lengths must give one count in [0, {n_xi}] per point")
+    if method == "series":
+        return _sinh_excess_matrix_series(points, xi, lengths)
     xi_float = [float(x) for x in xi]
-    entries = []
     zero = flint.arb(0)
     prec = flint.ctx.prec
+    entries = []
+    factored = [(start, mids, offsets,
+                 flint.arb_mat(len(mids), len(offsets), list(xi[start:start + len(mids) * len(offsets)])))
+                for start, mids, offsets in blocks]
     try:
         for t, length in zip(points, lengths, strict=True):
             t_float = float(t)
-            for x, x_float in zip(xi[:length], xi_float[:length], strict=True):
-                product = x * t
+            if method == "cancel":
+                t = t.mid()
+            values = [None] * length
+            for start, mids, offsets, xi_block in factored:
+                if start >= length or xi_float[start] * t_float < 0.5:
+                    continue
+                flint.ctx.prec = 2 * prec + 80  # exact products c_p t, d_j t
+                mid_products, offset_products = [c * t for c in mids], [d * t for d in offsets]
+                flint.ctx.prec = prec + 8
+                up_mid, up_offset = [v.exp() for v in mid_products], [v.exp() for v in offset_products]
+                down_mid, down_offset = [1 / v for v in up_mid], [1 / v for v in up_offset]
+                growth = flint.arb_mat(len(mids), 1, up_mid) * flint.arb_mat(1, len(offsets), up_offset)
+                decay = flint.arb_mat(len(mids), 1, down_mid) * flint.arb_mat(1, len(offsets), down_offset)
+                half_difference, linear = (growth - decay) / 2, xi_block * t
+                flint.ctx.prec = prec
+                block = (half_difference - linear).entries()  # rounded once, to the working precision
+                stop = min(length - start, len(block))
+                values[start:start + stop] = block[:stop]
+            flint.ctx.prec = 2 * prec + 80  # exact products of two midpoints (nodes have up to prec + 64 bits)
+            row = [x * t if v is None else None for x, v in zip(xi[:length], values, strict=True)]
+            # groups: the products >= 1/2 at the working precision, the others by their cancelled bits
+            groups = {}
+            for k, x_float in enumerate(xi_float[:length]):
+                if values[k] is not None:
+                    continue
                 size = x_float * t_float
                 if size >= 0.5:
-                    entries.append(product.sinh() - product)
-                elif method == "series" or size == 0.0:
-                    entries.append(sinh_excess(product))
-                else:  # at the exact midpoint: the ball of x t would be inflated by the cancellation
-                    exact = product.mid()
-                    flint.ctx.prec = prec + math.ceil(2.0 * math.log2(2.5 / size)) + 8  # 6/x^2 < (2.5/x)^2
-                    value = exact.sinh() - exact
-                    flint.ctx.prec = prec
-                    entries.append(+value)
+                    extra = 0
+                elif size == 0.0:
+                    extra = -1
+                else:  # 6/x^2 < (2.5/x)^2: the bits sinh(x) - x cancels, rounded up to a multiple of 32
+                    extra = 32 * math.ceil((2.0 * math.log2(2.5 / size) + 8) / 32)
+                groups.setdefault(extra, []).append(k)
+            for extra, members in groups.items():
+                if extra < 0:
+                    for k in members:
+                        values[k] = zero  # A(0) = 0 exactly
+                    continue
+                flint.ctx.prec = prec + extra
+                for k in members:
+                    product = row[k]
+                    values[k] = product.sinh() - product
+                flint.ctx.prec = prec
+                if extra > 0:  # rounded to the working precision (the others are at it)
+                    for k in members:
+                        values[k] = +values[k]
+            entries.extend(values)
             entries.extend([zero] * (n_xi - length))
     finally:
         flint.ctx.prec = prec
     return flint.arb_mat(len(points), n_xi, entries)
+
+
+def _sinh_excess_matrix_series(points, xi, lengths) -> flint.arb_mat:
+    xi_float = [float(x) for x in xi]
+    entries = []
+    zero = flint.arb(0)
+    for t, length in zip(points, lengths, strict=True):
+        t_float = float(t)
+        for x, x_float in zip(xi[:length], xi_float[:length], strict=True):
+            product = x * t
+            if x_float * t_float >= 0.5:
+                entries.append(product.sinh() - product)
+            else:
+                entries.append(sinh_excess(product))
+        entries.extend([zero] * (len(xi) - length))
+    return flint.arb_mat(len(points), len(xi), entries)
 
 
 def integral_x_i1(x):
@@ -242,6 +308,25 @@ def integral_x_i1_excess(x):
     if float(x) >= asymptotic_threshold():
         return _integral_x_i1_asymptotic(x) - x**3 / 6
     return _integral_x_i1_series(x, first=False)
+
+
+def integral_x_i1_pair(x):
+    """(F(x), F(x) - x^3/6) for arb x >= 0 (the xi-layer's load profiles), one evaluation for both.
+
+    Below ``asymptotic_threshold()``: F - x^3/6 = (x^5/80) 2F3(1, 5/2; 2, 3, 7/2; x^2/4) (the series
+    of ``integral_x_i1`` from its second term: positive terms, no cancellation) by Arb's
+    hypergeometric series in C (a rigorous ball, 2-3 times faster than the series in Python), and
+    F = that + x^3/6; above it the Hankel expansion of ``integral_x_i1`` (the same as there).
+    """
+    if float(x) >= asymptotic_threshold():
+        full = _integral_x_i1_asymptotic(x)
+        return full, full - x**3 / 6
+    if float(x) == 0.0:
+        return flint.arb(0), flint.arb(0)
+    x2 = x * x
+    half = flint.arb(1) / 2
+    excess = x2 * x2 * x / 80 * flint.arb.hypgeom(x2 / 4, [1, 5 * half], [2, 3, 7 * half])
+    return excess + x2 * x / 6, excess
 
 
 def _integral_x_i1_series(x, first: bool):
@@ -275,12 +360,24 @@ def _integral_x_i1_asymptotic(x):
 # --------------------------------------------------------------------------- Hankel-type expansions
 
 
-def _hankel(nu: int, count: int):
-    """a_k(nu) = prod_{j=1..k} (4 nu^2 - (2j - 1)^2) / (k! 8^k), k < count (DLMF 10.40), exact."""
+@functools.lru_cache(maxsize=64)
+def _hankel(nu: int, count: int) -> tuple:
+    """a_k(nu) = prod_{j=1..k} (4 nu^2 - (2j - 1)^2) / (k! 8^k), k < count (DLMF 10.40), exact (cached)."""
     out = [flint.fmpq(1)]
     for k in range(1, count):
         out.append(out[-1] * flint.fmpq(4 * nu * nu - (2 * k - 1) ** 2, 8 * k))
-    return out
+    return tuple(out)
+
+
+@functools.lru_cache(maxsize=256)
+def _hankel_arb(nu: int, count: int, prec: int) -> tuple:
+    """``_hankel(nu, count)`` rounded to arb at ``prec`` bits (the working precision of the caller; cached)."""
+    saved = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        return tuple(flint.arb(a) for a in _hankel(nu, count))
+    finally:
+        flint.ctx.prec = saved
 
 
 @functools.lru_cache(maxsize=8)
