@@ -434,10 +434,11 @@ WRITER = textwrap.dedent("""
 def test_no_temporary_survives_an_interrupt(tmp_path, how, signum):
     target = tmp_path / "out.csv"
     target.write_text("old\n")
-    # SIGINT at its default in the child (a test run started in the background ignores it, and children inherit that)
+    # the signal at its default in the child: a test run started in the background ignores SIGINT, one under nohup
+    # SIGHUP, and children inherit that (the writer rightly leaves an ignored signal ignored)
     process = subprocess.Popen([sys.executable, "-c", WRITER, how, str(target)], stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True,
-                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+                               preexec_fn=lambda: signal.signal(signum, signal.SIG_DFL))
     try:
         assert process.stdout.readline() == "writing\n"
         assert len(leftovers(tmp_path)) == 1  # the temporary file exists now
