@@ -226,9 +226,10 @@ def spinning_tail(t, start: float, far=True):
     are below (2 pi)^(-1/2) sum_k |c_k| X^(-k-1/2)/(k + 1/2) exp(-(1 + t) X) (J_k(eps) <=
     exp(-eps X) X^(-k-1/2)/(k + 1/2)), about (2 pi X)^(-1/2) 2 exp(-(1 + t) X) < exp(-X) <
     2^-prec e^-12 in all (c_0 = 1).  ``far=True`` (the solve) adds that bound to the ball's radius
-    instead of computing them (half the cost; the ball stays rigorous, its midpoint moves by less
-    than e^-12 ulp); ``far="exact"`` computes them (the check of that bound); ``far=False`` leaves
-    them out (the profiles, where the last bits need not be those of the solve).
+    instead of computing them (half the cost; that bound is rigorous, its midpoint moves by less
+    than e^-12 ulp; as before, the expansion's truncation and its exponentially small corrections,
+    both below an ulp, are not in the radius); ``far="exact"`` computes them (the check of that
+    bound); ``far=False`` leaves them out (the profiles, where the last bits need not be those of the solve).
 
     Warns
     -----
@@ -274,7 +275,7 @@ def load_profiles(c, xi):
     for x in xi:
         cx = c * x
         inverse = 1 / (x * x)
-        value, value_excess = integral_x_i1_pair(cx)  # one series for both (bit for bit the separate ones)
+        value, value_excess = integral_x_i1_pair(cx)  # F and F - x^3/6 together (overlapping the separate series)
         full.append(value * inverse)
         excess.append(value_excess * inverse)
     return full, excess

@@ -46,8 +46,9 @@ nodes because (F6) differentiates it.  Rows of A(xi t) for the profiles use
 t 2^-(prec + 8) with a rigorous bound on that rest added to the ball (``kernels_mp.xi_sum_truncation``: a row
 t needs xi up to about prec ln 2 / (2 - b - t), the quadrature runs to prec ln 2 / (1 - b)), and
 the tail without its exp(-X)-small half; the
-solve keeps full rows and that half of the tail as a rigorous bound in the ball's radius, and
-its rows are rigorous balls
+solve keeps full rows and that half of the tail as a rigorous bound in the ball's radius (the
+Hankel expansion's own truncation and exponentially small corrections, below an ulp, are not in
+it), and its rows' entries are rigorous balls
 (``sinh_excess_matrix(method="sharp")``: Arb's sinh at raised precision on exact products; the
 Nystrom nodes t_j are rounded to their midpoints, exact binary numbers like the xi-nodes, so that
 the products are exact and the balls as tight as the Taylor series' was, at a fraction of its
