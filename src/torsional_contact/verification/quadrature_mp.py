@@ -102,9 +102,7 @@ class Nodes:
             factors = [self.j1(lam) for lam in lams]
             values = []
             for i, r in enumerate(self.nodes):
-                value = coefficients[-1]
-                for cj in reversed(coefficients[:-1]):  # Horner
-                    value = value * r + cj
+                value = _horner(coefficients, r)
                 for factor in factors:
                     value *= factor[i]
                 values.append(value)
@@ -115,11 +113,16 @@ class Nodes:
             c = [ap.mp_to_arb(x) for x in coefficients]
             total = ap.flint.arb(0)
             for i, r in enumerate(self._arb_nodes):
-                value = c[-1]
-                for cj in reversed(c[:-1]):  # Horner
-                    value = value * r + cj
-                value *= weights[i]
+                value = _horner(c, r) * weights[i]
                 for factor in factors:
                     value *= factor[i]
                 total += value
         return ap.arb_to_mp(total)
+
+
+def _horner(coefficients, r):
+    """sum_j coefficients[j] r^j by Horner's rule (mpf or arb alike)."""
+    value = coefficients[-1]
+    for coefficient in reversed(coefficients[:-1]):
+        value = value * r + coefficient
+    return value
