@@ -3,8 +3,10 @@
 Also: the DAG of the default configuration (dry run), a no-op second run, that deleting outputs
 rebuilds exactly them and what depends on them, that editing a library module reruns exactly
 the rules whose scripts import it, that the configuration schema rejects bad values, the executed
-notebooks and Snakemake's report, and that a second clean build, interrupted by a hard kill (which
-leaves a lock that ``--unlock`` clears) and restarted, gives byte-identical non-timing outputs.
+notebooks and Snakemake's report.  The build is clean and survives a hard kill: it is killed (SIGKILL)
+as soon as its first job runs, which leaves a lock that ``--unlock`` clears, and restarted.  That a
+second clean build gives byte-identical non-timing outputs is checked by the ``rebuild`` tier, which
+CI runs once after the README's test command (``.ci/run``): it costs a whole second build.
 """
 
 import importlib.util
@@ -62,9 +64,25 @@ def planned_rules(run):
 
 
 @pytest.fixture(scope="module")
-def built():
+def interrupted_build():
+    """A clean build of the test configuration, hard-killed (SIGKILL) as soon as its first job runs, then run
+    again (which must stop at the lock and name ``--unlock``), unlocked and completed: (output folder, the run
+    that met the lock)."""
+    shutil.rmtree(OUT, ignore_errors=True)
+    _hard_kill_once_a_job_runs(OUT)
+    locked = snakemake(check=False)  # a dry run does not take the lock: try a real one
+    snakemake("--unlock")
     snakemake()
-    return OUT
+    # a job killed between writing its temporary file and renaming it leaves the temporary file
+    # (provenance.atomic_path, the manuscript's copy); no rule reads it
+    for leftover in [p for p in OUT.rglob("*") if p.name.startswith(".tmp-") or p.name.endswith(".tmp")]:
+        leftover.unlink()
+    return OUT, locked
+
+
+@pytest.fixture(scope="module")
+def built(interrupted_build):
+    return interrupted_build[0]
 
 
 def test_workflow_tests_run_on_one_worker(request):
@@ -94,6 +112,15 @@ def test_end_to_end_builds_every_deliverable(built):
         assert str(ROOT).encode() not in path.read_bytes(), path
     for name in ("errata", "torque_table", "paper", "fig3_torque_curve"):
         assert (built / "logs" / f"{name}.log").exists()
+
+
+def test_a_clean_build_survives_a_hard_kill(interrupted_build):
+    """The build killed while its first jobs ran left a lock: the next run stopped and named ``--unlock``; after
+    it the restart completed (the interrupted jobs rebuilt) and a further run does nothing."""
+    out, locked = interrupted_build
+    assert locked.returncode != 0 and "--unlock" in locked.stdout + locked.stderr
+    assert len(compare_builds.output_files(out)) > 40
+    assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake("-n"))
 
 
 def test_manuscript_cites_every_reference_and_resolves_every_label(built):
@@ -250,14 +277,6 @@ def test_latex_output_is_deterministic(built):
     assert (built / "paper" / "ms.pdf").read_bytes() == first
 
 
-#: Outputs of the timing benchmarks (every number in them a time or a ratio of times) and the
-#: figure drawn from their times: expected to differ between builds, so the second build takes them
-#: from the first instead of timing everything again (compare_builds checks they are timing outputs).
-TIMING_ONLY = ("data/benchmark_speed_error.json", "macros/benchmark.tex", "data/benchmark_scenes.json",
-               "tables/scenes.tex", "macros/scenes.tex", "data/benchmark_histories.json",
-               "macros/benchmark_histories.tex", "figures/work_precision.pdf", "figures/work_precision.png")
-
-
 def _hard_kill_once_a_job_runs(out: Path):
     """Start a build, SIGKILL Snakemake and its jobs as soon as the first job has started."""
     env = dict(os.environ, PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")
@@ -272,10 +291,19 @@ def _hard_kill_once_a_job_runs(out: Path):
     process.wait()
 
 
-def test_a_second_clean_build_survives_a_hard_kill_and_gives_identical_non_timing_outputs(built, tmp_path):
-    """A clean build killed (SIGKILL) while its first jobs run leaves a lock: the next run stops and
-    names ``--unlock``; after it, the restart completes (rebuilding the interrupted jobs), a further
-    run does nothing, and every non-timing output is byte-identical to the first build's."""
+#: Outputs of the timing benchmarks (every number in them a time or a ratio of times) and the
+#: figure drawn from their times: expected to differ between builds, so the second build takes them
+#: from the first instead of timing everything again (compare_builds checks they are timing outputs).
+TIMING_ONLY = ("data/benchmark_speed_error.json", "macros/benchmark.tex", "data/benchmark_scenes.json",
+               "tables/scenes.tex", "macros/scenes.tex", "data/benchmark_histories.json",
+               "macros/benchmark_histories.tex", "figures/work_precision.pdf", "figures/work_precision.png")
+
+
+@pytest.mark.rebuild
+def test_a_second_clean_build_gives_identical_non_timing_outputs(built, tmp_path):
+    """A second clean build (the first one interrupted by a hard kill and restarted, the fixture) gives every
+    non-timing output byte for byte: no time stamp, random cell id, absolute path or scheduling order leaks into
+    an output.  CI runs it once after the README's test command (marker ``rebuild``)."""
     first = tmp_path / "first"
     shutil.copytree(built, first)
     assert len(compare_builds.output_files(first)) > 40
@@ -284,16 +312,8 @@ def test_a_second_clean_build_survives_a_hard_kill_and_gives_identical_non_timin
         assert compare_builds.is_timing_output(rel), rel
         (built / rel).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(first / rel, built / rel)  # with its time stamp: up to date, not rerun
-    _hard_kill_once_a_job_runs(built)
-    locked = snakemake(check=False)  # a dry run does not take the lock: try a real one
-    assert locked.returncode != 0 and "--unlock" in locked.stdout + locked.stderr
-    snakemake("--unlock")
     snakemake()
     assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake("-n"))
-    # a job killed between writing its temporary file and renaming it leaves the temporary file
-    # (provenance.atomic_path, the manuscript's copy); no rule reads it
-    for leftover in [p for p in built.rglob("*") if p.name.startswith(".tmp-") or p.name.endswith(".tmp")]:
-        leftover.unlink()
     verdicts = compare_builds.compare_builds(first, built)
     # byte for byte: unlike the local/SLURM comparison, no normalisation of non-timing outputs
     failures = [(rel, verdict) for rel, verdict in verdicts

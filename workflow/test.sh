@@ -11,9 +11,9 @@ ruff check src tests workflow notebooks
 # of the three processes (the controller and two workers) rewrites every test module again (~3 CPU-s each)
 unset PYTHONDONTWRITEBYTECODE
 export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1
-# the fast and slow tiers (the slow one: end-to-end builds), on two workers (the statistical sweeps run in CI:
-# .ci/run); the workflow tests share one
-# worker (xdist group) because their builds share results/ci and Snakemake's lock
+# the fast and slow tiers (the slow one: the end-to-end build), on two workers; the statistical sweeps and the
+# second clean build compared byte for byte with the first run in CI (.ci/run: markers sweep and rebuild); the
+# workflow tests share one worker (xdist group) because their builds share results/ci and Snakemake's lock
 start=$(date +%s)
-python -m pytest -p no:cacheprovider -q -n 2 --dist loadgroup -m "not sweep" "$@"
+python -m pytest -p no:cacheprovider -q -n 2 --dist loadgroup -m "not sweep and not rebuild" "$@"
 echo "test: suite finished in $(( $(date +%s) - start )) s" >&2
