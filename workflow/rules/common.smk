@@ -24,6 +24,12 @@ def fig(name, caption, category="Figures"):
     return {"pdf": f"{OUT}/figures/{name}.pdf", "png": png}
 
 
+def figs(names, caption, category="Figures"):
+    """PDFs and PNGs of the figures one job draws (``fig`` of each, as lists in the order of ``names``)."""
+    each = [fig(name, caption, category) for name in names]
+    return {"pdf": [f["pdf"] for f in each], "png": [f["png"] for f in each]}
+
+
 #: For the timing benchmarks, which hold both cores (``threads: 2``) so that no other job disturbs
 #: them: Snakemake sets the BLAS thread variables to a job's threads, and the benchmarks time one.
 ONE_BLAS_THREAD = "OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MKL_NUM_THREADS=1"

@@ -7,8 +7,9 @@ rule fig2_contours:
         style=STYLE,
         lib=lib("workflow/scripts/fig2_contours.py"),
     output:
-        **fig("fig2_{quantity}", "fig2"),
+        **figs([f"fig2_{quantity}" for quantity in config["contours"]["quantities"]], "fig2"),
     params:
+        quantities=config["contours"]["quantities"],
         b=config["contours"]["stick_radius"],
         n=config["n_terms"],
         method=config["method"],
@@ -17,12 +18,12 @@ rule fig2_contours:
         z_max=config["contours"]["z_max"],
         tol=config["contours"]["tolerance"],
     log:
-        logfile("fig2_{quantity}"),
+        logfile("fig2_contours"),
     resources:
         runtime=5,
         mem_mb=1000,
     shell:
-        "python {input.script} --quantity {wildcards.quantity} --stick-radius {params.b} --method {params.method}"
+        "python {input.script} --quantity {params.quantities} --stick-radius {params.b} --method {params.method}"
         " --n-terms {params.n} --nr {params.nr} --nz {params.nz} --z-max {params.z_max} --tolerance {params.tol}"
         " --style {input.style} --pdf {output.pdf} --png {output.png} > {log} 2>&1"
 
@@ -72,19 +73,20 @@ rule fig4_interface:
         style=STYLE,
         lib=lib("workflow/scripts/fig4_interface.py"),
     output:
-        **fig("fig4_{quantity}", "fig4"),
+        **figs([f"fig4_{quantity}" for quantity in config["interface"]["quantities"]], "fig4"),
     params:
+        quantities=config["interface"]["quantities"],
         radii=config["interface"]["stick_radii"],
         n=config["n_terms"],
         method=config["method"],
         points=config["interface"]["n_points"],
     log:
-        logfile("fig4_{quantity}"),
+        logfile("fig4_interface"),
     resources:
         runtime=5,
         mem_mb=1000,
     shell:
-        "python {input.script} --quantity {wildcards.quantity} --stick-radii {params.radii} --method {params.method}"
+        "python {input.script} --quantity {params.quantities} --stick-radii {params.radii} --method {params.method}"
         " --n-terms {params.n} --n-points {params.points} --style {input.style} --pdf {output.pdf} --png {output.png}"
         " > {log} 2>&1"
 
@@ -217,6 +219,3 @@ rule fig_precision_ladder:
         "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
         " > {log} 2>&1"
 
-
-WILDCARDS["fig2_contours"] = {"quantity": config["contours"]["quantities"]}
-WILDCARDS["fig4_interface"] = {"quantity": config["interface"]["quantities"]}

@@ -89,21 +89,38 @@ def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
 
 def figure_parser(doc: str, data: bool = False, quantities=None) -> argparse.ArgumentParser:
     """Command line of a figure script: --style, --pdf, --png; --data for scripts that plot a JSON;
-    for scripts that solve themselves, --quantity (one of ``quantities``), --method and --n-terms.
+    for scripts that solve themselves, --quantity (one or more of ``quantities``: one figure each,
+    from the same solutions), --method and --n-terms; then --pdf and --png name one file per
+    quantity, in the same order (``figure_files``).
 
     Every option is required: the rule sets each value from the configuration."""
     parser = argparse.ArgumentParser(description=doc.strip().splitlines()[0])
+    several = "+" if quantities is not None else None
     if data:
         parser.add_argument("--data", required=True, help="JSON written by the workflow")
     if quantities is not None:
-        parser.add_argument("--quantity", choices=sorted(quantities), required=True)
+        parser.add_argument("--quantity", choices=sorted(quantities), nargs="+", required=True,
+                            help="one figure per quantity")
         parser.add_argument("--method", required=True, help="solve()'s method")
         parser.add_argument("--n-terms", type=int, required=True,
                             help="N of a weak form (ignored by a method whose interface values are exact)")
     parser.add_argument("--style", required=True, help="matplotlib style file")
-    parser.add_argument("--pdf", required=True)
-    parser.add_argument("--png", required=True)
+    parser.add_argument("--pdf", required=True, nargs=several, help="one per --quantity, in order" if several else None)
+    parser.add_argument("--png", required=True, nargs=several, help="one per --quantity, in order" if several else None)
     return parser
+
+
+def figure_files(parser: argparse.ArgumentParser, args) -> list:
+    """[(quantity, pdf, png)] of a script with --quantity: one PDF and one PNG per quantity, no quantity twice
+    (else the parser's error names the option)."""
+    if len(set(args.quantity)) != len(args.quantity):
+        parser.error(f"--quantity: each quantity once, got {' '.join(args.quantity)}")
+    for option, paths in (("--pdf", args.pdf), ("--png", args.png)):
+        if len(paths) != len(args.quantity):
+            parser.error(f"{option}: one file per --quantity ({len(args.quantity)}), got {len(paths)}")
+    if len(set(args.pdf) | set(args.png)) != 2 * len(args.quantity):
+        parser.error("--pdf, --png: every file a different path")
+    return list(zip(args.quantity, args.pdf, args.png, strict=True))
 
 
 def _methods():

@@ -1,12 +1,13 @@
 """Fig. 2a-c: contours of sigma_zt, sigma_rt (units f p0) and u_theta (f p0 a / mu) for one b/a.
 
-Computes only what the plot needs: fields on an (r, z) grid with the per-point series
-truncated at the plot tolerance (default 1e-4 of f p0).
+One figure per --quantity, all from one solution.  Computes only what the plots need: fields
+on an (r, z) grid with the per-point series truncated at the plot tolerance (default 1e-4 of
+f p0), the stresses once for both stress panels.
 """
 
 
 import numpy as np
-from _plotting import figure_parser, method_options, save_figure, subplots, use_style
+from _plotting import figure_files, figure_parser, method_options, save_figure, subplots, use_style
 
 from torsional_contact import solve
 
@@ -26,31 +27,35 @@ def main():
     p.add_argument("--tolerance", type=float, default=1e-4)
     a = p.parse_args()
 
+    figures = figure_files(p, a)
+
     # plot accuracy, not table accuracy: fewer Dini terms off the interface
     s = solve(stick_radius=a.stick_radius, tolerance=a.tolerance, **method_options(a))
     r = np.linspace(0.0, 1.0, a.nr)
     z = np.linspace(0.0, a.z_max, a.nz)
     rr, zz = np.meshgrid(r, z)
-    if a.quantity == "u_theta":
-        values = s.displacement(rr, zz)
-    else:
-        values = s.stress(rr, zz)[0 if a.quantity == "sigma_zt" else 1]
+    fields = {}
+    if {"sigma_zt", "sigma_rt"} & set(a.quantity):
+        fields["sigma_zt"], fields["sigma_rt"] = s.stress(rr, zz)[:2]
+    if "u_theta" in a.quantity:
+        fields["u_theta"] = s.displacement(rr, zz)
 
     use_style(a.style)
-    fig, ax = subplots(figsize=(3.1, 2.8))  # printed at half the text width: fonts at nominal size
-    levels = 21
-    filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
-    ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)
-    ax.axvline(a.stick_radius, color="w", ls="--", lw=0.8)
-    ax.text(a.stick_radius / 2, 0.03 * a.z_max, "stick", color="w", ha="center", va="bottom")
-    ax.text((1 + a.stick_radius) / 2, 0.03 * a.z_max, "slip", color="w", ha="center", va="bottom")
-    ax.set_xlabel(r"$r/a$")
-    ax.set_ylabel(r"$z/a$")
-    ax.set_title(f"{LABELS[a.quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$", fontsize=8)
-    fig.colorbar(filled, ax=ax, label=LABELS[a.quantity])
-    ax.grid(False)
-    save_figure(fig, a.pdf, a.png)
-
+    for quantity, pdf, png in figures:
+        values = fields[quantity]
+        fig, ax = subplots(figsize=(3.1, 2.8))  # printed at half the text width: fonts at nominal size
+        levels = 21
+        filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
+        ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)
+        ax.axvline(a.stick_radius, color="w", ls="--", lw=0.8)
+        ax.text(a.stick_radius / 2, 0.03 * a.z_max, "stick", color="w", ha="center", va="bottom")
+        ax.text((1 + a.stick_radius) / 2, 0.03 * a.z_max, "slip", color="w", ha="center", va="bottom")
+        ax.set_xlabel(r"$r/a$")
+        ax.set_ylabel(r"$z/a$")
+        ax.set_title(f"{LABELS[quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$", fontsize=8)
+        fig.colorbar(filled, ax=ax, label=LABELS[quantity])
+        ax.grid(False)
+        save_figure(fig, pdf, png)
 
 if __name__ == "__main__":
     main()

@@ -1,9 +1,11 @@
 """Fig. 4a-c: interface traction sigma_zt(r,0), sigma_rt(r,0) (units f p0) and slip
-(units f p0 a / mu) for several b/a."""
+(units f p0 a / mu) for several b/a.
+
+One figure per --quantity, each b/a solved once for all of them."""
 
 
 import numpy as np
-from _plotting import figure_parser, method_label, method_options, save_figure, subplots, use_style
+from _plotting import figure_files, figure_parser, method_label, method_options, save_figure, subplots, use_style
 
 from torsional_contact import solve
 
@@ -20,27 +22,31 @@ def main():
     p.add_argument("--n-points", type=int, default=801)
     a = p.parse_args()
 
+    figures = figure_files(p, a)
+
     r = np.linspace(0.0, 1.0, a.n_points)
     use_style(a.style)
-    fig, ax = subplots(figsize=(3.1, 2.45))  # printed at half the text width: fonts at nominal size
+    panels = {quantity: subplots(figsize=(3.1, 2.45)) for quantity, _, _ in figures}  # half the text width
     for b in a.stick_radii:
         s = solve(stick_radius=b, **method_options(a))
-        if a.quantity == "traction":
-            y = s.traction(r)
-        elif a.quantity == "sigma_rt":
-            y = s.stress(r, 0.0)[1]
-        else:
-            y = s.slip(r)
-        ax.plot(r, y, label=f"$b/a = {b:g}$, $T^* = {s.torque:.4f}$")
-    if a.quantity == "traction":
-        ax.axhline(1.0, color="0.5", lw=0.8)
-    ax.set_xlabel(r"$r/a$")
-    ax.set_ylabel(LABELS[a.quantity])
-    ax.set_xlim(0, 1)
-    if a.quantity == "traction":  # the panels of the figure share one legend: it is drawn in this one
-        ax.legend(title=method_label(s), fontsize=7.5, title_fontsize=7.5)
-    save_figure(fig, a.pdf, a.png)
-
+        for quantity, (_, ax) in panels.items():
+            if quantity == "traction":
+                y = s.traction(r)
+            elif quantity == "sigma_rt":
+                y = s.stress(r, 0.0)[1]
+            else:
+                y = s.slip(r)
+            ax.plot(r, y, label=f"$b/a = {b:g}$, $T^* = {s.torque:.4f}$")
+    for quantity, pdf, png in figures:
+        fig, ax = panels[quantity]
+        if quantity == "traction":
+            ax.axhline(1.0, color="0.5", lw=0.8)
+        ax.set_xlabel(r"$r/a$")
+        ax.set_ylabel(LABELS[quantity])
+        ax.set_xlim(0, 1)
+        if quantity == "traction":  # the panels of the figure share one legend: it is drawn in this one
+            ax.legend(title=method_label(s), fontsize=7.5, title_fontsize=7.5)
+        save_figure(fig, pdf, png)
 
 if __name__ == "__main__":
     main()
