@@ -1,10 +1,11 @@
 # Rebuild every figure, table, data file, the errata and the manuscript (see README):
 #   snakemake --profile workflow/profiles/default [--configfile config/test.yaml]
+import json
 import os
 import sys
 from pathlib import Path
 
-from snakemake.utils import min_version, validate
+from snakemake.utils import min_version
 
 min_version("9.0")
 
@@ -17,34 +18,10 @@ sys.modules.setdefault("rfc3987_syntax", None)
 configfile: "config/config.yaml"
 
 
-validate(config, "config/schema.json")
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "rules"))
+from config_checks import check as check_config  # noqa: E402
 
-
-def _check_integers(value, schema, where="config"):
-    """JSON Schema accepts 145.0 as an integer; the scripts do not: reject it here, naming the key."""
-    kind = schema.get("type")
-    if "$ref" in schema:
-        schema = SCHEMA["$defs"][schema["$ref"].rsplit("/", 1)[1]]
-        kind = schema.get("type")
-    if kind == "integer" and not isinstance(value, int):
-        raise ValueError(f"{where} must be an integer (write it without a decimal point), got {value!r}")
-    if kind == "object":
-        for key, sub in schema.get("properties", {}).items():
-            if key in value:
-                _check_integers(value[key], sub, f"{where}.{key}")
-    if kind == "array":
-        prefix = schema.get("prefixItems", [])
-        for i, item in enumerate(value):
-            sub = prefix[i] if i < len(prefix) else schema.get("items") or {}
-            _check_integers(item, sub, f"{where}[{i}]")
-
-
-import json
-
-SCHEMA = json.loads(Path("config/schema.json").read_text())
-_check_integers(config, SCHEMA)
-if not Path(config["style"]).is_file():
-    raise ValueError(f"config style: no such file {config['style']!r} (a matplotlib style file)")
+check_config(config, workflow.basedir)  # the schema, integers written as integers, the style file
 
 # Deterministic numerics: one BLAS thread per job (the last digit of LAPACK estimates
 # depends on the thread count); jobs inherit the environment of this process.

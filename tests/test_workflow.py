@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 import pytest
+import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 TEST_CONFIG = "config/test.yaml"
@@ -85,6 +86,14 @@ def built(interrupted_build):
     return interrupted_build[0]
 
 
+@pytest.fixture(scope="module")
+def dry_run_when_built(built):
+    """The output of one dry run of the test configuration right after the build (a Snakemake start costs about
+    2 CPU-s; several tests read it)."""
+    run = snakemake("-n")
+    return run.stdout + run.stderr
+
+
 def test_workflow_tests_run_on_one_worker(request):
     """Under ``--dist loadgroup`` every test here carries the group suffix, so one worker runs them
     all, one after the other (two builds at once would collide on Snakemake's lock).  pytest-xdist
@@ -114,13 +123,13 @@ def test_end_to_end_builds_every_deliverable(built):
         assert (built / "logs" / f"{name}.log").exists()
 
 
-def test_a_clean_build_survives_a_hard_kill(interrupted_build):
+def test_a_clean_build_survives_a_hard_kill(interrupted_build, dry_run_when_built):
     """The build killed while its first jobs ran left a lock: the next run stopped and named ``--unlock``; after
     it the restart completed (the interrupted jobs rebuilt) and a further run does nothing."""
     out, locked = interrupted_build
     assert locked.returncode != 0 and "--unlock" in locked.stdout + locked.stderr
     assert len(compare_builds.output_files(out)) > 40
-    assert "Nothing to be done" in (lambda r: r.stdout + r.stderr)(snakemake("-n"))
+    assert "Nothing to be done" in dry_run_when_built
 
 
 def test_manuscript_cites_every_reference_and_resolves_every_label(built):
@@ -188,9 +197,12 @@ def test_notebooks_are_executed_with_figures_inline_and_the_report_lists_the_fig
         assert name in report
 
 
-def test_second_run_does_nothing(built):
-    run = snakemake("-n")
-    assert "Nothing to be done" in run.stdout + run.stderr
+def test_second_run_does_nothing(dry_run_when_built):
+    assert "Nothing to be done" in dry_run_when_built
+
+
+def test_valid_configuration_validates_without_schema_warnings(dry_run_when_built):
+    assert "may not be validated correctly" not in dry_run_when_built
 
 
 def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built):
@@ -247,28 +259,55 @@ def test_changing_the_style_reruns_only_figures_and_what_shows_them(built):
                                     for r in rules), rules
 
 
-@pytest.mark.parametrize(
-    "edit, message",
-    [
-        (("n_terms: 60", "n_terms: -3"), "n_terms"),
-        (("n_terms: 60", "n_terms: 60.0"), "config.n_terms must be an integer"),
-        (("contours: {stick_radius: 0.5", "contours: {stick_raduis: 0.5"), "stick_raduis"),
-        (("style: workflow/styles/paper.mplstyle", "style: workflow/styles/missing.mplstyle"), "no such file"),
-        (("quantities: [sigma_zt, sigma_rt, u_theta]", "quantities: [sigma_zt]"), "quantities"),
-    ],
-)
-def test_schema_rejects_a_bad_configuration(tmp_path, edit, message):
-    bad = tmp_path / "bad.yaml"
+#: Edits of the test configuration that the checks must reject, with what the error must name.
+BAD_EDITS = [
+    (("n_terms: 60", "n_terms: -3"), "n_terms"),
+    (("n_terms: 60", "n_terms: 60.0"), "config.n_terms must be an integer"),
+    (("contours: {stick_radius: 0.5", "contours: {stick_raduis: 0.5"), "stick_raduis"),
+    (("style: workflow/styles/paper.mplstyle", "style: workflow/styles/missing.mplstyle"), "no such file"),
+    (("quantities: [sigma_zt, sigma_rt, u_theta]", "quantities: [sigma_zt]"), "quantities"),
+]
+
+
+def _edited_test_config(edit) -> str:
     text = (ROOT / TEST_CONFIG).read_text()
     assert edit[0] in text
-    bad.write_text(text.replace(edit[0], edit[1], 1))
+    return text.replace(edit[0], edit[1], 1)
+
+
+@pytest.fixture(scope="module")
+def config_checks():
+    """workflow/rules/config_checks.py, the checks the Snakefile runs on its configuration."""
+    spec = importlib.util.spec_from_file_location("config_checks", ROOT / "workflow" / "rules" / "config_checks.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("edit, message", BAD_EDITS)
+def test_config_checks_reject_a_bad_configuration(config_checks, edit, message):
+    """In-process, on the function the Snakefile calls (a Snakemake start costs about 2 CPU-s)."""
+    from snakemake.exceptions import WorkflowError
+
+    config = yaml.safe_load(_edited_test_config(edit))
+    with pytest.raises((WorkflowError, ValueError)) as error:
+        config_checks.check(config, ROOT)
+    assert message in str(error.value)
+
+
+def test_config_checks_accept_the_shipped_configurations(config_checks):
+    for name in ("config/config.yaml", TEST_CONFIG):
+        config_checks.check(yaml.safe_load((ROOT / name).read_text()), ROOT)
+
+
+@pytest.mark.parametrize("edit, message", [BAD_EDITS[1], BAD_EDITS[4]])
+def test_snakemake_stops_at_a_bad_configuration(tmp_path, edit, message):
+    """End to end: the Snakefile runs the checks before any rule (an integer written with a decimal point, which
+    only the checks beyond JSON Schema catch, and a list the schema itself rejects)."""
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(_edited_test_config(edit))
     run = snakemake("-n", config=str(bad), check=False)
     assert run.returncode != 0 and message in (run.stdout + run.stderr)
-
-
-def test_valid_configuration_validates_without_schema_warnings():
-    run = snakemake("-n", config=TEST_CONFIG)
-    assert "may not be validated correctly" not in run.stdout + run.stderr
 
 
 def test_latex_output_is_deterministic(built):

@@ -9,8 +9,7 @@ from snakemake.io import strip_wildcard_constraints
 OUT = config["outdir"]
 STYLE = config["style"]
 PAPER_PDF = f"{OUT}/paper/ms.pdf"
-sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "rules"))
-from dependencies import library_files  # noqa: E402
+from dependencies import library_files  # noqa: E402 (workflow/rules is on sys.path: Snakefile)
 
 
 def lib(script):
