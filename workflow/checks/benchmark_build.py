@@ -20,7 +20,7 @@ What is measured
 * The test suite: ``bash workflow/test.sh`` (the README's test command: lint and every tier on two
   workers), wall and CPU time, and the summed duration of each test module from pytest's JUnit XML
   (tests of one module may run on both workers at once).  The suite's own build folder
-  (``results/ci``) is removed first, as from a fresh clone (the suite's last test removes it too).
+  (``results/ci``) is removed first, as from a fresh clone (the suite's build fixture removes it too).
 
 ``--baseline DIR`` measures another checkout of the repository (e.g. ``git archive`` of an older
 commit, run with this .venv and ``PYTHONPATH=DIR/src``) interleaved with this one, ``--repeats``

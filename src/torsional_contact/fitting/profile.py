@@ -27,7 +27,11 @@ each constrained fit started from the nearest profile point already computed; it
 within ``ROOT_TOLERANCE`` of sqrt(F) (LR within 3 % of F: the interval's level within 0.3 %);
 inside a bracket by Newton's step from the bracket's end nearest the target, or bisection when that
 does not halve the step (``BRACKETED_STEPS`` more fits once bracketed: where kappa reaches its bound
-the profile has a kink and rises like a wall).
+the profile has a kink and rises like a wall).  A bracket narrower than ``ROOT_TOLERANCE`` of its
+outer end also ends the search, at that outer end (the interval errs wide): where r is linear in
+psi that is the accuracy the tolerance on r gives, and where the profile jumps (a constrained fit
+past the jump lands in another valley, r leaps from below sqrt(F) to many times it) no point comes
+within the tolerance, and bisection would only narrow the jump until the fits run out.
 An end beyond a parameter's limit (y = 0, or T_s above the largest torque, where the profile is
 flat) is unbounded.  A profile point below S_min means that the first fit stopped in a local
 minimum: ``BetterMinimum`` carries the point, and the caller starts again from there.
@@ -280,6 +284,8 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
                 return ProfileEnd(None, None, steps) if y_cap == math.inf else ProfileEnd(y_cap, p, steps, True)
         else:
             hi = delta
+        if hi < math.inf and hi - lo <= ROOT_TOLERANCE * hi:  # as close as the tolerance on r gives (a jump: no closer)
+            break
         newton = delta + (target - r) / slope if slope > 0 else math.nan
         if hi < math.inf:  # bracketed: Newton's step when it stays inside and shrinks fast enough, else bisection
             newton = _bracketed_newton(points, lo, hi, target)
