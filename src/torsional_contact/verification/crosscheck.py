@@ -19,7 +19,8 @@ from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
 
-__all__ = ["rounding_error", "condition_numbers", "truncation_error", "truncation_errors", "GROWTH_DIGITS"]
+__all__ = ["rounding_error", "condition_numbers", "truncation_error", "truncation_errors", "weak_forms_at",
+           "GROWTH_DIGITS"]
 
 #: Digits a backward-stable dense solve may lose beyond log10 of its condition number.  LU with partial pivoting
 #: bounds the forward error by kappa x 3n x growth x EPS (|dA| <= gamma_3n |L||U|; growth = || |L||U| || / ||A||,
@@ -201,7 +202,7 @@ def truncation_error(stick_radius: float, method: str, n_terms: int, n_terms_con
     }
 
 
-def _converged_solutions(stick_radius: float, n_terms: int) -> dict:
+def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
     """(T*, omega) of both weak forms at N = ``n_terms`` from one factorisation: method -> (torque, omega), and
     ``rounding_bound`` = EPS / rcond of the equilibrated A (the relative rounding both routes are subject to).
 
@@ -244,9 +245,9 @@ def _converged_solutions(stick_radius: float, n_terms: int) -> dict:
 
 def truncation_errors(stick_radius: float, n_terms: int, n_terms_converged: int, methods=WEAK_FORMS) -> list:
     """``truncation_error`` for each of ``methods`` at one b, the converged systems solved with one factorisation
-    (``_converged_solutions``): the published T* is computed as ``solve_series`` computes it, the complete one by
+    (``weak_forms_at``): the published T* is computed as ``solve_series`` computes it, the complete one by
     block elimination (agreeing with ``solve_series`` to kappa EPS, ~1e-11 relative at N = 4000)."""
-    converged = _converged_solutions(stick_radius, n_terms_converged)
+    converged = weak_forms_at(stick_radius, n_terms_converged)
     out = []
     for method in methods:
         with warnings.catch_warnings():
