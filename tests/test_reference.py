@@ -7,6 +7,7 @@ evaluation of the traction series for the regularity condition.
 
 import json
 import math
+import re
 import subprocess
 import sys
 import warnings
@@ -248,6 +249,16 @@ def test_truncation_errors_one_factorisation(b):
     assert_within(abs(rows["complete"]["rigid_rotation_converged"] - own["complete"].rigid_rotation)
                   / abs(own["complete"].rigid_rotation), bound / abs(own["complete"].rigid_rotation),
                   "two stable solves, omega against |x| ~ 1: 10^GROWTH_DIGITS EPS / rcond")
+
+
+@pytest.mark.parametrize("b, n, message", [
+    (0.0, 10, "stick_radius must lie in (0, 1]"), (1.5, 10, "stick_radius must lie in [0, 1]"),
+    (-0.1, 10, "stick_radius must lie in [0, 1]"), (math.nan, 10, "stick_radius must be finite"),
+    (0.5, 0, "n_terms must be an integer >= 1"), (0.5, 2.5, "n_terms must be an integer >= 1"),
+])
+def test_weak_forms_at_rejects_bad_input_naming_the_argument(b, n, message):
+    with pytest.raises(ValueError, match=re.escape(message)):
+        crosscheck.weak_forms_at(b, n)
 
 
 def test_write_json_atomic(tmp_path):

@@ -12,6 +12,7 @@ import warnings
 import numpy as np
 from scipy import linalg
 
+from .. import validation
 from ..diagnostics import AccuracyWarning, IllConditioningWarning, UnphysicalResultWarning
 from ..solvers.equilibration import equilibrate, scalings
 from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, solve_series
@@ -213,8 +214,11 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
     Schur complement d - t.A^-1 s is not small against |d| + |t||A^-1 s| (checked: ``AccuracyWarning``).  The two
     routes to the complete solution agree to kappa EPS (kappa = 1 / rcond of the equilibrated A).
     """
-    b = float(stick_radius)
-    lam = bessel_j2_zeros(int(n_terms))
+    b = validation.real_number("stick_radius", stick_radius, 0.0, 1.0)
+    if b == 0.0:
+        raise ValueError("stick_radius must lie in (0, 1]: at 0 the closure of the weak forms divides by zero "
+                         "(solve() takes the spinning limit there)")
+    lam = bessel_j2_zeros(validation.positive_int("n_terms", n_terms))
     n = lam.size
     complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
     published = complete[:n, :n]
