@@ -173,3 +173,31 @@ def test_slip_never_raises_the_shear_above_the_bilateral_maximum(b):
     c1 = abs(solve_abel_fredholm(b).dini_amplitudes(1)[0])
     lam1 = bessel_j2_zeros(1)[0]
     assert_within(s.torque - resultant.max(), 10 * c1 * lam1 * 0.582 * np.exp(-1.5 * lam1), "slowest Dini mode")
+
+
+@pytest.mark.parametrize("method, b", [("complete", 5e-324), ("complete", 1e-300), ("published", 5e-324)])
+def test_a_stick_radius_at_the_bottom_of_the_double_range_is_refused_naming_it(method, b):
+    """Where a weak form's system or T* leaves the double range: a ValueError naming stick_radius, without a
+    numpy warning on the way (the resolution warning of our own category comes first)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        warnings.simplefilter("ignore", ResolutionWarning)
+        with pytest.raises(ValueError, match=f"stick_radius=.* is too small for the {method} weak form"):
+            solve(stick_radius=b, method=method, n_terms=60)
+
+
+def test_the_published_form_at_1e_300_is_finite_and_flagged():
+    """Still inside the double range the printed scheme returns its (impossible) finite T*, flagged as such."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        warnings.simplefilter("ignore", ResolutionWarning)
+        with pytest.warns(UnphysicalResultWarning):
+            s = solve(stick_radius=1e-300, method="published", n_terms=60)
+    assert np.isfinite(s.torque) and s.torque > 4 / 3
+
+
+def test_terms_to_resolve_a_subnormal_width_is_an_integer():
+    from torsional_contact.solvers.weak_form import MAX_SERIES_TERMS, terms_to_resolve
+
+    needed = terms_to_resolve(5e-324)
+    assert isinstance(needed, int) and needed > 10 * MAX_SERIES_TERMS

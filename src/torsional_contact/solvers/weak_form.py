@@ -98,6 +98,7 @@ for traction 1) and omega -> +infinity (omega grows like ln(1/b)/2 as b -> 0).
 from __future__ import annotations
 
 import math
+import sys
 import warnings
 from dataclasses import dataclass
 
@@ -190,8 +191,10 @@ def resolution_limit(n_terms: int) -> tuple[float, float]:
 def terms_to_resolve(width: float) -> int:
     """Smallest N whose highest term fits ``RESOLUTION_WAVELENGTHS`` wavelengths into ``width`` (0 < width <= 1).
 
-    lam_N >= RESOLUTION_WAVELENGTHS / width with the zeros of J2, lam_N ~ pi (N + 3/4).
+    lam_N >= RESOLUTION_WAVELENGTHS / width with the zeros of J2, lam_N ~ pi (N + 3/4).  A width below the smallest
+    normal double counts as that (the estimate would overflow; the N is astronomically beyond any solve either way).
     """
+    width = max(float(width), sys.float_info.min)
     n = max(1, math.ceil(RESOLUTION_WAVELENGTHS / (math.pi * width) - 0.75))
     if n > 10 * MAX_SERIES_TERMS:  # far beyond what can be solved: the estimate says enough
         return n
@@ -295,6 +298,12 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
         If the reciprocal condition number of the equilibrated system is below 1e-13.
     UnphysicalResultWarning
         If the published formulation returns T* > 4/3 (physically impossible).
+
+    Raises
+    ------
+    ValueError
+        Naming stick_radius, if its system or T* leaves the double range (b near the bottom of the
+        double range, e.g. 1e-300 for the complete form, 5e-324 for the published one).
     """
     if closure not in CLOSURES:
         raise ValueError(f"closure must be one of {CLOSURES}, got {closure!r}")
@@ -317,7 +326,13 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
             stacklevel=3,
         )
     matrix, rhs_torque, rhs_constant = assemble(method, lam, b)
-    x, rcond = equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_constant]))
+    too_small = (f"stick_radius={b:.6g} is too small for the {method} weak form at n_terms={n_terms}: its system "
+                 f"leaves the double range")
+    try:  # a scaling that overflows is refused by the finiteness check of equilibrated_solve
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+            x, rcond = equilibrated_solve(matrix, np.column_stack([rhs_torque, rhs_constant]))
+    except ValueError as error:  # entries at the bottom of the double range: the scaling overflows
+        raise ValueError(f"{too_small} ({error}); the default method solves any stick_radius in [0, 1]") from error
     if rcond < RCOND_WARN:
         warnings.warn(
             f"the {method} system for stick_radius={b:.6g}, n_terms={n_terms} is "
@@ -328,10 +343,13 @@ def solve_series(stick_radius: float, method: str = "complete", n_terms: int = 1
         )
     x_torque, x_constant = x[:, 0], x[:, 1]
     n = lam.size
-    torque = closure_torque(closure, method, lam, b, x_torque, x_constant)
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):  # checked on the next line
+        torque = closure_torque(closure, method, lam, b, x_torque, x_constant)
+    if not math.isfinite(torque):
+        raise ValueError(f"{too_small} (T* = {torque}); the default method solves any stick_radius in [0, 1]")
     coeffs = x_constant + torque * x_torque
     omega = float(coeffs[n]) if method == "complete" else math.nan
-    if not 1.0 <= torque <= GROSS_SLIP_TORQUE or not math.isfinite(torque):
+    if not 1.0 <= torque <= GROSS_SLIP_TORQUE:
         cause = ("a consequence of the missing rigid-rotation mode (see the errata)" if method == "published"
                  else f"n_terms={n_terms} does not resolve stick_radius={b:.6g}")
         warnings.warn(

@@ -96,7 +96,7 @@ def resolution_advice(width) -> str:
     small-stick-disc and small-slip expansions take over at the ends) -- never a count such as
     n_terms >= 3e300 that no computer could use.
     """
-    needed = terms_to_resolve(max(float(width), 1e-300))
+    needed = terms_to_resolve(float(width))
     if needed <= AFFORDABLE_TERMS:
         return f"use n_terms >= {needed}"
     return (f"no affordable n_terms resolves it (it needs more than {AFFORDABLE_TERMS}): use the default method "
