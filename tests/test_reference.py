@@ -19,7 +19,7 @@ import pytest
 from arb_points import at_mpf
 from tolerances import EPS, assert_close, assert_within
 
-from torsional_contact.diagnostics import AccuracyWarning
+from torsional_contact.diagnostics import AccuracyWarning, ResolutionWarning
 from torsional_contact.io import cli
 from torsional_contact.solvers import weak_form as formulations
 from torsional_contact.special import integrals
@@ -255,10 +255,20 @@ def test_truncation_errors_one_factorisation(b):
     (0.0, 10, "stick_radius must lie in (0, 1]"), (1.5, 10, "stick_radius must lie in [0, 1]"),
     (-0.1, 10, "stick_radius must lie in [0, 1]"), (math.nan, 10, "stick_radius must be finite"),
     (0.5, 0, "n_terms must be an integer >= 1"), (0.5, 2.5, "n_terms must be an integer >= 1"),
+    (5e-324, 60, "is too small for the weak forms"), (1e-300, 60, "is too small for the weak forms"),
+    (1e-200, 60, "is too small for the weak forms"),
 ])
 def test_weak_forms_at_rejects_bad_input_naming_the_argument(b, n, message):
-    with pytest.raises(ValueError, match=re.escape(message)):
-        crosscheck.weak_forms_at(b, n)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # no numpy warning on the way
+        warnings.simplefilter("ignore", AccuracyWarning)  # the Schur complement at 1e-200: ours, before the error
+        with pytest.raises(ValueError, match=re.escape(message)):
+            crosscheck.weak_forms_at(b, n)
+
+
+def test_weak_forms_at_an_unresolved_stick_radius_warns():
+    with pytest.warns(ResolutionWarning, match="stick_radius=1e-12 is not resolved by n_terms=60"):
+        crosscheck.weak_forms_at(1e-12, 60)
 
 
 def test_write_json_atomic(tmp_path):

@@ -13,9 +13,9 @@ import numpy as np
 from scipy import linalg
 
 from .. import validation
-from ..diagnostics import AccuracyWarning, IllConditioningWarning, UnphysicalResultWarning
+from ..diagnostics import AccuracyWarning, IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
 from ..solvers.equilibration import equilibrate, scalings
-from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, solve_series
+from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, resolution_limit, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
@@ -219,16 +219,33 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
         raise ValueError("stick_radius must lie in (0, 1]: at 0 the closure of the weak forms divides by zero "
                          "(solve() takes the spinning limit there)")
     lam = bessel_j2_zeros(validation.positive_int("n_terms", n_terms))
+    b_min, b_max = resolution_limit(lam.size)
+    if not b_min <= b <= b_max and b != 1.0:
+        warnings.warn(f"stick_radius={b:.6g} is not resolved by n_terms={lam.size} (resolved: [{b_min:.4g}, "
+                      f"{b_max:.4g}]): T* and omega of both weak forms may be off in their leading digits",
+                      ResolutionWarning, stacklevel=2)
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):  # the result is checked below
+        out = _weak_forms(b, lam)
+    if not all(np.isfinite(out[method][0]) for method in WEAK_FORMS) or not np.isfinite(out["complete"][1]):
+        raise ValueError(f"stick_radius={b:.6g} is too small for the weak forms at n_terms={lam.size}: their system "
+                         f"or T* leaves the double range")
+    return out
+
+
+def _weak_forms(b: float, lam: np.ndarray) -> dict:
+    """The numbers of ``weak_forms_at`` (checked there)."""
     n = lam.size
     complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
     published = complete[:n, :n]
     row, col = scalings(published)
     scaled = published * row[:, None] * col[None, :]
-    lu, pivots = linalg.lu_factor(scaled, check_finite=True)
+    if not np.all(np.isfinite(scaled)):  # the scaling overflows: nothing below is a number
+        return {method: (math.inf, math.nan) for method in WEAK_FORMS} | {"rounding_bound": math.nan}
+    lu, pivots = linalg.lu_factor(scaled, check_finite=False)
     rcond = _rcond(lu, scaled)
     if rcond < RCOND_WARN:
         warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
-                      f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=2)
+                      f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=3)
     rhs = np.column_stack([rhs_torque[:n], rhs_constant[:n]])
     x = linalg.lu_solve((lu, pivots), rhs * row[:, None]) * col[:, None]  # as equilibrated_solve
     border = linalg.lu_solve((lu, pivots), complete[:n, n] * row) * col
@@ -238,7 +255,7 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
     schur = d - t @ border
     if abs(schur) < 1e3 * EPS * (abs(d) + np.abs(t) @ np.abs(border)):
         warnings.warn(f"block elimination of the complete system at stick_radius={b:.6g}, n_terms={n}: the Schur "
-                      f"complement {schur:.3g} is at rounding level", AccuracyWarning, stacklevel=2)
+                      f"complement {schur:.3g} is at rounding level", AccuracyWarning, stacklevel=3)
     omega = (np.array([rhs_torque[n], rhs_constant[n]]) - t @ x) / schur
     coefficients = x - border[:, None] * omega[None, :]
     solution = np.vstack([coefficients, omega[None, :]])
