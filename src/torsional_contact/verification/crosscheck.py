@@ -213,6 +213,10 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
     omega = (f_n - t.A^-1 f) / (d - t.A^-1 s), c = A^-1 f - omega A^-1 s, a backward-stable route while the
     Schur complement d - t.A^-1 s is not small against |d| + |t||A^-1 s| (checked: ``AccuracyWarning``).  The two
     routes to the complete solution agree to kappa EPS (kappa = 1 / rcond of the equilibrated A).
+
+    Raises ValueError naming the argument for stick_radius outside (0, 1], n_terms not an integer >= 1, or a
+    stick radius whose system or T* leaves the double range (about 1e-200 and below at N = 60); warns
+    (``ResolutionWarning``) where N does not resolve the stick disc or the slip annulus.
     """
     b = validation.real_number("stick_radius", stick_radius, 0.0, 1.0)
     if b == 0.0:
