@@ -525,6 +525,8 @@ def test_a_loop_that_never_slips_gives_only_a_lower_bound(seed):
 def test_a_modulus_buried_in_the_twist_noise_is_not_identified(seed):
     """Partial slip (T* = 1.3, the contact's twist about 33 urad) under a twist noise of 100 urad: G gets no value
     and no tight interval, and the fit says so; or, should the data say more, an interval that holds the true G.
+    The slip test may also miss the buried hysteresis (at its level 0.05 it did in 12 of 200 seeds): then the fit
+    reports a straight loop, G not identified, and for f only what |T*| <= 4/3 proves, which holds the true f.
 
     Seed 101 is a regression: its likelihood's best loop had its gross-slip plateau just at the tips, trading the
     tips' twist residuals for distances to a flat line (LR 11.5 over every partial-slip loop), and reported G
@@ -536,7 +538,12 @@ def test_a_modulus_buried_in_the_twist_noise_is_not_identified(seed):
         fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0)
     lo, hi = fit.shear_modulus.interval
     assert hi is None or lo is None or hi / lo > 3  # what the data say about G spans a factor of 3 at least
-    if fit.shear_modulus.identified:  # then by an interval that is wide (above) and says so only with a value
+    if not fit.slip_detected:  # the noise hid the hysteresis from the slip test: a straight loop, stated as such
+        assert fit.regime == "stick" and fit.stick_test < fit.stick_critical
+        assert fit.shear_modulus.value is None and (lo, hi) == (None, None)
+        assert "no slip detected" in fit.message and "G is not identified" in fit.message
+        assert fit.friction.value is None and fit.friction.interval[0] <= RIG.friction
+    elif fit.shear_modulus.identified:  # then by an interval that is wide (above) and says so only with a value
         assert fit.shear_modulus.value is not None and lo is not None and hi is not None
     else:
         assert fit.noise_limited and fit.shear_modulus.value is None
