@@ -289,6 +289,31 @@ def test_interpolant_series_against_direct_rows(b):
                           "25-digit rounding x the xi-sum's cancellation (allowance 2e5)")
 
 
+def test_cancelled_bits_groups_are_those_of_the_scalar_formula():
+    """The vectorised grouping of the products by the bits sinh(x) - x cancels puts every product in the group
+    the scalar formula 32 ceil((2 log2(2.5/x) + 8)/32) gives (0 at x >= 1/2, -1 at x = 0), also at the floats
+    next to the group boundaries x = 2.5 2^-(16 k - 4), where numpy's log2 and libm's may round apart."""
+    boundaries = [2.5 * 2.0 ** -(16 * k - 4) for k in range(1, 5)]
+    near = [np.nextafter(x, direction) for x in boundaries for direction in (0.0, 1.0)]
+    logs = np.random.default_rng(3).uniform(-1070.0, 1.5, 4000)
+    sizes = np.concatenate([[0.0, 0.5, np.nextafter(0.5, 0.0), 5e-324, 1e-310], boundaries, near, 2.0**logs])
+
+    def scalar(size):
+        if size >= 0.5:
+            return 0
+        if size == 0.0:
+            return -1
+        if size < 2.5 / np.finfo(float).max:  # 2.5/x overflows (subnormal x)
+            return 32 * math.ceil((2.0 * (math.log2(2.5) - math.log2(size)) + 8) / 32)
+        return 32 * math.ceil((2.0 * math.log2(2.5 / size) + 8) / 32)
+
+    groups = special_mp._cancelled_bits_groups(sizes)
+    assigned = {index: extra for extra, members in groups for index in members}
+    assert sorted(assigned) == list(range(sizes.size))  # every product in exactly one group
+    assert [assigned[i] for i in range(sizes.size)] == [scalar(float(x)) for x in sizes]
+    assert len({extra for extra, _ in groups}) == len(groups)
+
+
 def test_fast_sinh_excess_and_short_tail_within_rounding():
     """The profiles' shortcuts: A(x) = sinh(x) - x with the cancelled bits added back equals the
     Taylor series to the rounding of both (2^-110 = 8e-34 per operation at 30 digits, a few dozen

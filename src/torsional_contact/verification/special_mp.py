@@ -26,6 +26,7 @@ import functools
 import math
 
 import flint
+import numpy as np
 
 from .arbitrary_precision import to_full_accuracy
 
@@ -214,6 +215,7 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
     if method == "series":
         return _sinh_excess_matrix_series(points, xi, lengths)
     xi_float = [float(x) for x in xi]
+    xi_array = np.array(xi_float)
     zero = flint.arb(0)
     prec = flint.ctx.prec
     entries = []
@@ -241,39 +243,56 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
                 block = (half_difference - linear).entries()  # rounded once, to the working precision
                 stop = min(length - start, len(block))
                 values[start:start + stop] = block[:stop]
+            pending = [k for k in range(length) if values[k] is None]
             flint.ctx.prec = 2 * prec + 80  # exact products of two midpoints (nodes have up to prec + 64 bits)
-            row = [x * t if v is None else None for x, v in zip(xi[:length], values, strict=True)]
+            products = [xi[k] * t for k in pending]
             # groups: the products >= 1/2 at the working precision, the others by their cancelled bits
-            groups = {}
-            for k, x_float in enumerate(xi_float[:length]):
-                if values[k] is not None:
-                    continue
-                size = x_float * t_float
-                if size >= 0.5:
-                    extra = 0
-                elif size == 0.0:
-                    extra = -1
-                else:  # 6/x^2 < (2.5/x)^2: the bits sinh(x) - x cancels, rounded up to a multiple of 32
-                    extra = 32 * math.ceil((2.0 * math.log2(2.5 / size) + 8) / 32)
-                groups.setdefault(extra, []).append(k)
-            for extra, members in groups.items():
+            for extra, members in _cancelled_bits_groups(xi_array[pending] * t_float):
                 if extra < 0:
-                    for k in members:
-                        values[k] = zero  # A(0) = 0 exactly
+                    for m in members:
+                        values[pending[m]] = zero  # A(0) = 0 exactly
                     continue
                 flint.ctx.prec = prec + extra
-                for k in members:
-                    product = row[k]
-                    values[k] = product.sinh() - product
+                excess = [products[m].sinh() - products[m] for m in members]
                 flint.ctx.prec = prec
                 if extra > 0:  # rounded to the working precision (the others are at it)
-                    for k in members:
-                        values[k] = +values[k]
+                    excess = [+v for v in excess]
+                for m, v in zip(members, excess, strict=True):
+                    values[pending[m]] = v
             entries.extend(values)
             entries.extend([zero] * (n_xi - length))
     finally:
         flint.ctx.prec = prec
     return flint.arb_mat(len(points), n_xi, entries)
+
+
+def _cancelled_bits_groups(sizes):
+    """[(extra bits, indices)] of the products x t (floats ``sizes``): 0 where x t >= 1/2, -1 where it is 0, else
+    the bits sinh(x) - x cancels, 6/x^2 < (2.5/x)^2, rounded up to a multiple of 32:
+    32 ceil((2 log2(2.5/x) + 8)/32) (``_cancelled_bits``).  Vectorised; where numpy's log2 could round the
+    argument of the ceiling across an integer, the entry is recomputed by the scalar formula."""
+    extra = np.zeros(sizes.size, dtype=np.int64)
+    small = (sizes < 0.5) & (sizes != 0.0)
+    extra[sizes == 0.0] = -1
+    with np.errstate(over="ignore"):
+        ratio = 2.5 / sizes[small]
+    overflow = ~np.isfinite(ratio)  # x below 2.5 / DBL_MAX (subnormal): log2(2.5) - log2(x)
+    ratio[overflow] = 1.0
+    logarithm = np.log2(ratio)
+    logarithm[overflow] = math.log2(2.5) - np.log2(sizes[small][overflow])
+    steps = (2.0 * logarithm + 8.0) / 32.0
+    extra[small] = 32 * np.ceil(steps).astype(np.int64)
+    near = np.abs(steps - np.rint(steps)) < 1e-9
+    for index in np.flatnonzero(small)[near]:
+        extra[index] = _cancelled_bits(float(sizes[index]))
+    return [(int(e), np.flatnonzero(extra == e).tolist()) for e in np.unique(extra)]
+
+
+def _cancelled_bits(size: float) -> int:
+    """32 ceil((2 log2(2.5/x) + 8)/32) for 0 < x < 1/2 (log2(2.5) - log2(x) where 2.5/x overflows)."""
+    ratio = 2.5 / size
+    logarithm = math.log2(ratio) if math.isfinite(ratio) else math.log2(2.5) - math.log2(size)
+    return 32 * math.ceil((2.0 * logarithm + 8) / 32)
 
 
 def _sinh_excess_matrix_series(points, xi, lengths) -> flint.arb_mat:
