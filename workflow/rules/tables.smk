@@ -106,8 +106,8 @@ rule benchmark_speed_error:
         per_radius=config["benchmark"]["per_radius_radii"],
         curve=config["benchmark"]["curve_radii"],
         inverse=config["benchmark"]["inverse_torques"],
-    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
-    priority: 100  # first, while nothing else runs (it needs both cores)
+    threads: 1  # one core, beside one other job (a neighbour moves the medians by about the run-to-run spread)
+    priority: 100  # first: long, and it needs no other job's output
     log:
         logfile("benchmark_speed_error"),
     resources:
@@ -136,8 +136,8 @@ rule benchmark_scenes:
         nz=config["contours"]["nz"],
         z_max=config["contours"]["z_max"],
         repeats=config["benchmark_scenes"]["repeats"],
-    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
-    priority: 100  # first, while nothing else runs (it needs both cores)
+    threads: 1  # one core, beside one other job (a neighbour moves the medians by about the run-to-run spread)
+    priority: 100  # first: long, and it needs no other job's output
     log:
         logfile("benchmark_scenes"),
     resources:
@@ -169,8 +169,8 @@ rule benchmark_histories:
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
         baseline=config["benchmark_histories"]["baseline_points"],
-    threads: 2  # holds both cores: the timings are not disturbed by a parallel job
-    priority: 100  # first, while nothing else runs (it needs both cores)
+    threads: 1  # one core, beside one other job (a neighbour moves the medians by about the run-to-run spread)
+    priority: 100  # first: long, and it needs no other job's output
     log:
         logfile("benchmark_histories"),
     resources:
