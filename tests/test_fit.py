@@ -140,11 +140,15 @@ def _noisy_record(rig_kind: str, seed: int):
     return torque, twist, s_t, s_w
 
 
-@pytest.mark.parametrize("seed", seeds())
+@pytest.mark.parametrize("seed", [1948788444, *seeds()])
 @pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
 def test_foot_points_minimise_each_samples_distance(rig_kind, seed):
     """Every d_i^2 against a brute-force minimisation of the sample's misfit over the true twist (a grid of 2001
-    twists over +-8 noise levels, then Brent's method on the best cell)."""
+    twists over +-8 noise levels, then Brent's method on the best cell).
+
+    Seed 1948788444 is a regression: the sample at the last reversal of the partial-slip record has two minima
+    0.04 noise levels apart on either side of a corner (where its branch joins the virgin curve), and the foot
+    point stayed in the higher one, 1.9e-3 above the other (``LoopModel._across_corners``)."""
     torque, twist, s_t, s_w = _noisy_record(rig_kind, seed)
     model = _model(torque, twist, s_t, s_w)
     p = _true_parameters(twist, model.reversals)
@@ -575,14 +579,23 @@ def test_bias_corrected_percentiles_of_a_shifted_normal(seed):
                        "sampled quantile and z_0 (two-sided, p ~ 6e-5)")
 
 
-@pytest.mark.parametrize("seed", seeds())
+@pytest.mark.parametrize("seed", [506366747, *seeds()])
 def test_bootstrap_intervals_bracket_the_estimates(seed):
+    """Bootstrap and profile intervals of the same fit agree in width.  Seed 506366747 is a regression: the profile
+    of 1/G stays below the critical value down to the bound kappa = KAPPA_MIN, and the end at the bound, computed
+    as psi_hat - (psi_hat - bound), rounded above the bound, so that G was reported identified with an upper end
+    of 2.5e14 Pa (3000 times the truth; the bootstrap's: 4.8e11)."""
     torque, twist = twist_controlled(RIG, 2.5e-3, cycles=1.5, samples_per_cycle=100)
     torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(seed))
     fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0, bootstrap=40, seed=seed + 1)
     assert fit.bootstrap == 40
     for estimate in (fit.friction, fit.shear_modulus, fit.compliance):
         lo, hi = estimate.bootstrap_interval
+        if not estimate.identified:  # G when the profile of 1/G reaches 0 (a twist noise that hides the contact's
+            # twist: in about one record in 60): no value and an open interval, whose width no bootstrap can match
+            assert estimate is fit.shear_modulus and fit.noise_limited and estimate.value is None
+            assert estimate.interval[1] is None and lo < hi
+            continue
         assert lo < estimate.value < hi
         p_lo, p_hi = estimate.interval
         # the same sampling distribution seen two ways: the widths agree up to the bootstrap's sampling error. Its

@@ -229,9 +229,14 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     points = []  # (distance from psi_hat, r, dr/d distance, parameters)
     steps = 0
 
+    def psi_at(delta):
+        """psi at that distance; the limit itself (not psi_hat + side span, which rounds to either side of it) there,
+        so that a caller can tell an end the data set from one at the limit."""
+        return limit if limit is not None and delta >= span else psi_hat + side * delta
+
     def evaluate(delta):
         nonlocal steps
-        psi = psi_hat + side * delta
+        psi = psi_at(delta)
         # from the nearest point of the profile that is not far outside the interval (a fit far out may have
         # wandered into another valley), or from the minimum
         sane = [(0.0, 0.0, 0.0, np.asarray(p_hat, dtype=float))] + [pt for pt in points if pt[1] <= 3.0 * target]
@@ -276,7 +281,7 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         r, p = evaluate(delta)
         at_cap = kind != "compliance" and p[1] >= kappa_max * (1 - 1e-6)
         if abs(r - target) <= ROOT_TOLERANCE * target:
-            return ProfileEnd(psi_hat + side * delta, p, steps, at_cap)
+            return ProfileEnd(psi_at(delta), p, steps, at_cap)
         slope = points[-1][2]
         if r < target:
             lo = delta
@@ -300,6 +305,6 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
             delta = min(min(max(grow, 1.25 * delta), 4.0 * delta), reach)
     if hi < math.inf:  # the outer end of the bracket: the interval errs wide
         outer = min((pt for pt in points if pt[0] == hi), key=lambda pt: pt[1])
-        return ProfileEnd(psi_hat + side * hi, outer[3], steps, kind != "compliance"
+        return ProfileEnd(psi_at(hi), outer[3], steps, kind != "compliance"
                           and outer[3][1] >= kappa_max * (1 - 1e-6))
     return ProfileEnd(None, None, steps)
