@@ -185,8 +185,21 @@ class LoopModel:
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
         # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far
         state = np.array([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
+        state = self._descend(curve, state, columns)
+        if lookup.thresholds:
+            state = self._across_corners(curve, state, lookup, offset, reach)
+        u, torque, slope = state[0], state[1], state[2]
+        self._foot = (key, (u, torque, slope))
+        return self._foot[1]
+
+    def _descend(self, curve, start, samples):
+        """Newton's steps (``_project``) for the samples ``samples`` from their states ``start`` (rows twist, torque,
+        slope and curvature, one column per sample) until none gains more than ``FOOT_GAIN``: their final states."""
+        s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
+        positions = np.arange(samples.size)
+        state = start.copy()
         # the samples still moving, with their observations, segments and states (the iteration's own copies)
-        active, observed, segment, current = columns, self._observed, self.segment, state.copy()
+        active, observed, segment, current = positions, self._observed[:, samples], self.segment[samples], state.copy()
         for _ in range(FOOT_ITERATIONS):
             (t_obs, w_obs), (w, g, s, c) = observed, current
             with np.errstate(over="ignore", invalid="ignore"):
@@ -210,7 +223,7 @@ class LoopModel:
             g_trial, s_trial, c_trial = curve(trial, segment)
             trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
             best = np.argmin(trial_misfit, axis=0)
-            within = columns[:active.size]
+            within = positions[:active.size]
             lower = trial_misfit[best, within] <= misfit
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
             active, observed, segment = active[lower], observed[:, lower], segment[lower]
@@ -218,9 +231,49 @@ class LoopModel:
             state[:, active] = current
             if active.size == 0:
                 break
-        u, torque, slope = state[0], state[1], state[2]
-        self._foot = (key, (u, torque, slope))
-        return self._foot[1]
+        return state
+
+    def _misfit(self, state, samples):
+        """Squared distance (noise units) of the samples ``samples`` from their states (rows twist, torque, ...)."""
+        return ((self.torque[samples] - state[1]) ** 2 / self.torque_noise**2
+                + (self.twist[samples] - state[0]) ** 2 / self.twist_noise**2)
+
+    def _across_corners(self, curve, state, lookup, offset, reach):
+        """The foot points, checked across the corners of the curve within each sample's reach.
+
+        Where a branch joins an earlier one (a piece end of its segment) the curve has a corner, and a sample's
+        misfit may have two minima a small fraction of the starting grid's spacing apart, one on each side of it
+        (0.04 noise levels apart, 2e-3 apart in misfit, for a sample at a reversal): Newton's steps stay in the
+        basin the grid chose.  For each corner within a sample's reach, the misfit just past it on the side away from
+        the foot point so far is evaluated; where it falls going away from the corner (a minimum in that piece), the
+        steps start again from there, and the lower of the two foot points is kept.
+        """
+        samples_all = self._columns
+        heading = lookup.heading[self.segment]
+        best = self._misfit(state, samples_all)
+        for threshold in lookup.thresholds:  # one piece end per segment (inf: none)
+            with np.errstate(invalid="ignore"):
+                corner = threshold[self.segment] * heading + offset  # the twist of the corner
+                near = np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)
+            if not near.any():
+                continue
+            samples, corner, direction = samples_all[near], corner[near], heading[near]
+            # the side of the corner away from the foot point so far (the steps found the minimum on its own side)
+            side = np.where(direction * (state[0, near] - corner) > 0.0, -direction, direction)
+            twist = corner + side * 1e-6 * np.maximum(reach[near], self.twist_noise)
+            g, slope, second = curve(twist, self.segment[near])
+            # half the misfit's derivative along the twist, going away from the corner on that side
+            falling = side * ((g - self.torque[samples]) * slope / self.torque_noise**2
+                              + (twist - self.twist[samples]) / self.twist_noise**2) < 0.0
+            if not falling.any():
+                continue
+            moved = samples[falling]
+            end = self._descend(curve, np.array([twist, g, slope, second])[:, falling], moved)
+            misfit = self._misfit(end, moved)
+            improved = misfit < best[moved]
+            state[:, moved[improved]] = end[:, improved]
+            best[moved[improved]] = misfit[improved]
+        return state
 
     def distances(self, p, jacobian: bool = False):
         """The residual vector (noise units) [and its Jacobian d/dp] (module docstring, "Turning points").
