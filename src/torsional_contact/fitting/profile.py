@@ -216,7 +216,10 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     furthest psi on this side; ``limit_lr``: the LR statistic there if known without a fit (the
     flat profile of a slip torque above the largest torque).  An end not found within
     ``MAX_PROFILE_STEPS`` fits is the outer end of its bracket, or unbounded (None) without one.
-    Raises ``BetterMinimum`` (with ``better_minimum``; without, a point below the minimum counts
+    Each constrained fit starts from the nearest profile point with r <= 3 target; an end found by a
+    fit started outside the interval is fitted again from the minimum, and the lower of the two is
+    the profile there (a fit outside may sit in another valley).  An end at ``limit`` is ``limit``
+    itself.  Raises ``BetterMinimum`` (with ``better_minimum``; without, a point below the minimum counts
     as LR = 0).
     """
     psi_hat = Constraint(kind, 0.0).of(p_hat)
@@ -234,13 +237,15 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         so that a caller can tell an end the data set from one at the limit."""
         return limit if limit is not None and delta >= span else psi_hat + side * delta
 
-    def evaluate(delta):
+    def evaluate(delta, from_minimum=False):
+        """(r, parameters, whether the fit started outside the interval) of the constrained fit at delta."""
         nonlocal steps
         psi = psi_at(delta)
         # from the nearest point of the profile that is not far outside the interval (a fit far out may have
         # wandered into another valley), or from the minimum
         sane = [(0.0, 0.0, 0.0, np.asarray(p_hat, dtype=float))] + [pt for pt in points if pt[1] <= 3.0 * target]
-        start = np.array(min(sane, key=lambda pt: abs(pt[0] - delta))[3], dtype=float)
+        nearest = sane[0] if from_minimum else min(sane, key=lambda pt: abs(pt[0] - delta))
+        start = np.array(nearest[3], dtype=float)
         if kind == "slip_torque":
             start[0] = psi
         elif kind == "compliance":
@@ -255,7 +260,7 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         r = math.sqrt(max(lr, 0.0))
         slope = side * _slope(model, p, kind) / scale2 / (2.0 * r) if r > 0 else 0.0  # dr/d delta
         points.append((delta, r, slope, p))
-        return r, p
+        return r, p, nearest[1] > target
 
     # y = kappa C beyond kappa_max C needs a larger C, which the data fix far more tightly than y: the profile rises
     # like a wall there.  When the search reaches the bound it tries just inside: if the end lies beyond, the model's
@@ -278,7 +283,15 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     lo, hi = 0.0, math.inf  # the bracket: r < target at lo, r >= target at hi
     step, last_step = math.inf, math.inf
     while steps < MAX_PROFILE_STEPS or (hi < math.inf and steps < MAX_PROFILE_STEPS + BRACKETED_STEPS):
-        r, p = evaluate(delta)
+        r, p, from_outside = evaluate(delta)
+        if abs(r - target) <= ROOT_TOLERANCE * target and from_outside:
+            # an end reached from a fit outside the interval may sit in that fit's valley, above the profile: the fit
+            # from the minimum decides (the lower is the profile)
+            r_minimum, p_minimum, _ = evaluate(delta, from_minimum=True)
+            if r_minimum < r:
+                r, p = r_minimum, p_minimum
+            else:
+                points.pop()
         at_cap = kind != "compliance" and p[1] >= kappa_max * (1 - 1e-6)
         if abs(r - target) <= ROOT_TOLERANCE * target:
             return ProfileEnd(psi_at(delta), p, steps, at_cap)
@@ -289,7 +302,10 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
                 return ProfileEnd(None, None, steps) if y_cap == math.inf else ProfileEnd(y_cap, p, steps, True)
         else:
             hi = delta
-        if hi < math.inf and hi - lo <= ROOT_TOLERANCE * hi:  # as close as the tolerance on r gives (a jump: no closer)
+        # as close as the tolerance on r gives where r is linear in psi - psi_hat (a jump: no closer), and as close
+        # as it gives on psi itself: near psi = 0 (y's lower end, G far above its estimate) r is steep in psi, and a
+        # bracket narrow against its distance from psi_hat may still leave r 2 % from its target
+        if hi < math.inf and hi - lo <= ROOT_TOLERANCE * min(hi, abs(psi_at(lo)), abs(psi_at(hi))):
             break
         newton = delta + (target - r) / slope if slope > 0 else math.nan
         if hi < math.inf:  # bracketed: Newton's step when it stays inside and shrinks fast enough, else bisection
