@@ -20,7 +20,7 @@ rule friction_test_coverage:
         seed=FRICTION_TEST["seed"],
         blas=ONE_BLAS_THREAD,  # one BLAS thread in each worker: two would oversubscribe the two cores
     threads: 2  # the draws are fitted on two processes (the output does not depend on their number)
-    priority: 110  # first, while both cores are free (started last, it left one idle at the end)
+    priority: 110  # first, while both cores are free (a two-thread job waits until both are idle)
     log:
         logfile("friction_test_coverage"),
     resources:
