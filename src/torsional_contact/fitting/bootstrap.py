@@ -17,9 +17,20 @@ inherits the fitted parameters as the truth, so that where the fit itself is far
 that barely identifies G) it is no better than the profile interval.  Its Monte Carlo error at
 ``count`` refits is about sqrt(q (1 - q) / count) / density at each end: use a few hundred
 refits.  Cost: ``count`` fits (about 10-30 ms each for a few hundred samples).
+
+Resolution.  B refits resolve a level q only within [1/(B + 1), B/(B + 1)] (the (B + 1) q-th
+order statistic must exist).  A level beyond it puts the end at the smallest or largest refit,
+short of the bias-corrected end: the interval comes out too narrow, and the more so the larger
+|z_0| (at B = 40 and z_0 = -1.4, a sixth of the width; an estimator biased by one standard error,
+as C of a twist-controlled gross-slip loop with a small contact twist, has |z_0| ~ 1).  Such an
+end is reported as unresolved, with the number of refits that would resolve it
+(``BootstrapInterval``); ``fit_loop`` says so in its message and warns.
 """
 
 from __future__ import annotations
+
+import math
+from dataclasses import dataclass
 
 import numpy as np
 from scipy import special  # the normal quantiles (scipy.stats: the same functions, 0.5 s more to import)
@@ -27,7 +38,47 @@ from scipy import special  # the normal quantiles (scipy.stats: the same functio
 from .loop_model import LoopModel
 from .profile import fit
 
-__all__ = ["bootstrap_intervals", "bias_corrected_percentiles"]
+__all__ = ["bootstrap_intervals", "bias_corrected_percentiles", "bias_correction", "percentile_levels",
+           "unresolved_ends", "BootstrapInterval"]
+
+
+@dataclass(frozen=True)
+class BootstrapInterval:
+    """One quantity's bootstrap: ``interval`` (lower, upper), the bias correction ``bias`` = z_0, the ends
+    (``"lower"``, ``"upper"``) whose level the refits do not resolve (module docstring, "Resolution"), and
+    ``refits_needed``, the fewest refits that would resolve both (None: both are resolved)."""
+
+    interval: tuple
+    bias: float
+    unresolved: tuple = ()
+    refits_needed: int | None = None
+
+
+def bias_correction(replicates, estimate: float) -> float:
+    """z_0 = Phi^-1(fraction of ``replicates`` below ``estimate``, ties counted half), the fraction kept within
+    [1/(2B), 1 - 1/(2B)] for B replicates (so that z_0 is finite)."""
+    r = np.asarray(replicates, dtype=float)
+    below = (np.count_nonzero(r < estimate) + 0.5 * np.count_nonzero(r == estimate)) / r.size
+    below = min(max(below, 0.5 / r.size), 1.0 - 0.5 / r.size)
+    return float(special.ndtri(below))
+
+
+def percentile_levels(bias: float, confidence: float) -> tuple:
+    """The levels (Phi(2 z_0 - z), Phi(2 z_0 + z)) of the bias-corrected ends, z the normal quantile of the level."""
+    z = float(special.ndtri(0.5 + confidence / 2))
+    lower, upper = special.ndtr([2 * bias - z, 2 * bias + z])
+    return float(lower), float(upper)
+
+
+def unresolved_ends(levels, count: int) -> tuple:
+    """(ends, refits): the ends ("lower", "upper") whose level lies outside [1/(B + 1), B/(B + 1)] for B = ``count``
+    refits, and the fewest refits that resolve both levels (None when both are resolved)."""
+    lower, upper = levels
+    ends = tuple(name for name, tail in (("lower", lower), ("upper", 1.0 - upper)) if (count + 1) * tail < 1.0)
+    if not ends:
+        return (), None
+    tail = min(lower, 1.0 - upper)
+    return ends, math.ceil(1.0 / tail) - 1 if tail > 0 else None
 
 
 def bias_corrected_percentiles(replicates, estimate: float, confidence: float):
@@ -36,17 +87,14 @@ def bias_corrected_percentiles(replicates, estimate: float, confidence: float):
     Returns (lower, upper); None at an end that a replicate pinned to a bound cannot place.
     """
     r = np.sort(np.asarray(replicates, dtype=float))
-    below = (np.count_nonzero(r < estimate) + 0.5 * np.count_nonzero(r == estimate)) / r.size
-    below = min(max(below, 0.5 / r.size), 1.0 - 0.5 / r.size)
-    z0 = float(special.ndtri(below))
-    z = float(special.ndtri(0.5 + confidence / 2))
-    probabilities = special.ndtr([2 * z0 - z, 2 * z0 + z])
+    probabilities = percentile_levels(bias_correction(r, estimate), confidence)
     return tuple(float(np.quantile(r, q)) for q in probabilities)
 
 
 def bootstrap_intervals(model: LoopModel, p, scale2: float, count: int, confidence: float, seed, lower, upper,
                         kappa_max: float) -> dict:
-    """{"slip_torque", "product", "compliance"}: (lower, upper) bias-corrected percentile intervals."""
+    """{"slip_torque", "product", "compliance"}: their ``BootstrapInterval`` (bias-corrected percentile intervals,
+    z_0 and the ends the ``count`` refits do not resolve)."""
     rng = np.random.default_rng(seed)
     p = np.asarray(p, dtype=float)
     true_twist = model.foot_points(p).copy()
@@ -63,8 +111,11 @@ def bootstrap_intervals(model: LoopModel, p, scale2: float, count: int, confiden
     estimates = (p[0], p[1] * p[2], p[2])
     out = {}
     for j, name in enumerate(("slip_torque", "product", "compliance")):
-        lo, hi = bias_corrected_percentiles(replicates[:, j], estimates[j], confidence)
+        bias = bias_correction(replicates[:, j], estimates[j])
+        levels = percentile_levels(bias, confidence)
+        lo, hi = (float(np.quantile(replicates[:, j], q)) for q in levels)
         if name == "product" and lo <= 0.0:
             lo = None  # 1/G at its bound 0: no upper end of G
-        out[name] = (lo, hi)
+        ends, refits = unresolved_ends(levels, count)
+        out[name] = BootstrapInterval((lo, hi), bias, ends, refits)
     return out

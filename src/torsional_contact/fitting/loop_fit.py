@@ -123,7 +123,7 @@ from scipy import optimize, special  # quantiles from special: scipy.stats costs
 
 from .. import units
 from ..criteria import GROSS_SLIP_TORQUE
-from ..diagnostics import NoiseLimitedFitWarning
+from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
 from . import profile as profiles
 from .loop_model import LoopModel
 from .results import Estimate, LoopFit
@@ -508,10 +508,16 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
 
         boot = bootstrap_intervals(model, p, scale2, bootstrap, confidence, seed, lower, upper, KAPPA_MAX)
         n_boot = int(bootstrap)
-        friction = _with_bootstrap(friction, boot["slip_torque"], to_f)
-        lo, hi = boot["product"]
-        modulus = _with_bootstrap(modulus, (g_from(hi), g_from(lo)), 1.0)
-        compliance_estimate = _with_bootstrap(compliance_estimate, boot["compliance"], 1.0)
+        friction = _with_bootstrap(friction, boot["slip_torque"].interval, to_f, boot["slip_torque"].bias)
+        lo, hi = boot["product"].interval
+        # G = 1 / (c_g y) falls as y rises: y's lower end is G's upper end, and the fraction below flips
+        modulus = _with_bootstrap(modulus, (g_from(hi), g_from(lo)), 1.0, -boot["product"].bias)
+        compliance_estimate = _with_bootstrap(compliance_estimate, boot["compliance"].interval, 1.0,
+                                              boot["compliance"].bias)
+        unresolved = _unresolved_note(boot, n_boot)
+        if unresolved:
+            message += "; " + unresolved
+            warnings.warn(unresolved, AccuracyWarning, stacklevel=3)
     return LoopFit(
         friction=friction, shear_modulus=modulus, compliance=compliance_estimate,
         twist_offset=Estimate(offset, float(se[3]), _wald(offset, se[3], math.sqrt(critical))),
@@ -524,8 +530,33 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
         parameters=np.array(p, dtype=float), **common)
 
 
-def _with_bootstrap(estimate: Estimate, interval, factor: float) -> Estimate:
+def _with_bootstrap(estimate: Estimate, interval, factor: float, bias: float) -> Estimate:
     lo, hi = interval
     scaled = (None if lo is None else factor * lo, None if hi is None else factor * hi)
     return Estimate(estimate.value, estimate.stderr, estimate.interval, estimate.identified, estimate.lower_bound,
-                    scaled, estimate.assumed_end)
+                    scaled, estimate.assumed_end, bias)
+
+
+def _unresolved_note(boot: dict, count: int) -> str:
+    """What the message says of bootstrap ends at levels ``count`` refits do not resolve ("" if none)."""
+    flipped = {"lower": "upper", "upper": "lower"}
+    ends, needed = [], []
+    for key, symbol in (("slip_torque", "f"), ("product", "G"), ("compliance", "C")):
+        item = boot[key]
+        names = sorted(flipped[e] if key == "product" else e for e in item.unresolved)
+        if names:
+            bias = -item.bias if key == "product" else item.bias  # G's own z_0 (``Estimate.bootstrap_bias``)
+            ends.append(f"the {' and '.join(names)} end{'s' if len(names) > 1 else ''} of {symbol} "
+                        f"(z_0 = {bias:.2f})")
+            count_ends = len(names)
+            if item.refits_needed is not None:
+                needed.append(item.refits_needed)
+            ends[-1] = (ends[-1], count_ends)
+    if not ends:
+        return ""
+    several = sum(n for _, n in ends) > 1
+    more = f"; about {max(needed)} refits resolve {'them' if several else 'it'}" if needed else ""
+    return (f"bootstrap: the bias-corrected level{'s' if several else ''} of {' and '.join(t for t, _ in ends)} "
+            f"lie{'' if several else 's'} beyond what {count} refits resolve (1/{count + 1} from either side): "
+            f"{'such an end is' if several else 'that end is'} the extreme refit, and the bootstrap interval too "
+            f"narrow{more}")

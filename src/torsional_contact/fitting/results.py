@@ -19,7 +19,9 @@ class Estimate:
     ``stderr`` are then None, ``interval`` holds what the data do say (None: unbounded) and
     ``lower_bound`` its lower end.  ``assumed_end`` ("lower" or "upper") names an end of the interval
     set by the model's bound kappa <= ``loop_fit.KAPPA_MAX`` rather than by the data.  ``bootstrap_interval``:
-    the bias-corrected percentile interval of a parametric bootstrap, when asked for.
+    the bias-corrected percentile interval of a parametric bootstrap, when asked for, and ``bootstrap_bias`` its
+    bias correction z_0 = Phi^-1(fraction of the refits below the estimate): the estimator's median bias in
+    standard errors, with the opposite sign (``fitting.bootstrap``).
     """
 
     value: float | None
@@ -29,6 +31,7 @@ class Estimate:
     lower_bound: float | None = None
     bootstrap_interval: tuple[float | None, float | None] | None = None
     assumed_end: str | None = None
+    bootstrap_bias: float | None = None
 
     def as_dict(self) -> dict:
         out = {"value": _json(self.value), "stderr": _json(self.stderr),
@@ -39,6 +42,8 @@ class Estimate:
             out["assumed_end"] = self.assumed_end
         if self.bootstrap_interval is not None:
             out["bootstrap_interval"] = [_json(self.bootstrap_interval[0]), _json(self.bootstrap_interval[1])]
+        if self.bootstrap_bias is not None:
+            out["bootstrap_bias"] = _json(self.bootstrap_bias)
         return out
 
 
