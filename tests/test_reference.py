@@ -309,6 +309,32 @@ def test_arb_assembly_agrees_with_mpmath_assembly(method, b):
     assert arb.solve_bound is not None and arb.solve_bound < mpmath.mpf(10) ** -(digits + 5)
 
 
+@pytest.mark.skipif(arbitrary_precision.flint is None, reason="the Arb assembly needs python-flint")
+def test_arb_assembly_keeps_the_functions_of_the_zeros_exact_across_radii_and_precisions():
+    """The Arb assembly evaluates J_k(lam_n) and int_0^lam_n t J1 once per set of zeros and working precision: its
+    matrices are ball for ball those of an assembly without the kept values, at a second radius (values kept) and at
+    another precision (not the 30-digit values reused at 40)."""
+    from torsional_contact.verification import weak_form_arb
+
+    with mpmath.workdps(60), arbitrary_precision.working_digits(50):  # the same zeros (balls) at both precisions
+        lam = [arbitrary_precision.mp_to_arb(x) for x in weak_form_mp.bessel_j2_zeros(20, 55)]
+
+    def assembled(b, digits, fresh):
+        with arbitrary_precision.working_digits(digits):
+            if fresh:
+                weak_form_arb._ZERO_VALUES.clear()
+            matrix, rhs = weak_form_arb.assemble("complete", lam, arbitrary_precision.flint.arb(b) / 10)
+            return [(x.mid().man_exp(), x.rad().man_exp()) for x in matrix.entries() + rhs.entries()]
+
+    with mpmath.workdps(60):
+        first = assembled(3, 30, fresh=True)
+        kept = assembled(7, 30, fresh=False)
+        assert kept == assembled(7, 30, fresh=True)
+        assembled(3, 30, fresh=False)
+        finer = assembled(7, 40, fresh=False)
+        assert finer == assembled(7, 40, fresh=True) and finer != kept and first != kept
+
+
 def test_bad_assembly():
     with pytest.raises(ValueError, match="assembly"):
         reference.solve_reference(0.5, "complete", 10, 20, assembly="numpy")

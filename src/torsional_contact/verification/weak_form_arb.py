@@ -30,6 +30,26 @@ def _products(lam, b) -> list:
     return [(b * x).mid() for x in lam]
 
 
+#: The functions of the zeros alone (``_at_zeros``) for the last few (working precision, zeros): the same for every
+#: stick radius, of which a reference job solves several.
+_ZERO_VALUES: dict = {}
+_ZERO_VALUES_KEPT = 4
+
+
+def _at_zeros(lam) -> tuple:
+    """(J0, J1, J2 at lam_n, G(lam_n) = int_0^lam_n t J1(t) dt) as lists of arb: what the assembly needs of the zeros
+    alone.  Kept for the last few sets of zeros and working precisions (keyed on the balls' exact midpoints and
+    radii), so that each is evaluated once per job; the values are those of a fresh evaluation."""
+    key = (flint.ctx.prec, tuple((x.mid().man_exp(), x.rad().man_exp()) for x in lam))
+    values = _ZERO_VALUES.get(key)
+    if values is None:
+        values = tuple([_bessel(k, x) for x in lam] for k in (0, 1, 2)) + ([integral_t_j1_hyp1f2(x) for x in lam],)
+        if len(_ZERO_VALUES) >= _ZERO_VALUES_KEPT:
+            del _ZERO_VALUES[next(iter(_ZERO_VALUES))]
+        _ZERO_VALUES[key] = values
+    return values
+
+
 def integral_t_j1_hyp1f2(x):
     """int_0^x t J1(t) dt = x^3/6 1F2(3/2; 2, 5/2; -x^2/4) (eq. 51, as printed), exact arb x >= 0."""
     if x.is_zero():
@@ -50,7 +70,7 @@ def assemble(method: str, lam, b):
     method = validation.choice("method", method, WEAK_FORMS)
     n = len(lam)
     blam = _products(lam, b)
-    j0, j1, j2 = ([_bessel(k, x) for x in lam] for k in (0, 1, 2))
+    j0, j1, j2, g_one = _at_zeros(lam)
     b0, b1, b2 = ([_bessel(k, x) for x in blam] for k in (0, 1, 2))
     size = n if method == "published" else n + 1
     entries = [flint.arb(0)] * (size * size)
@@ -68,7 +88,6 @@ def assemble(method: str, lam, b):
             value = bracket / (squares[i] - squares[k])
             entries[i * size + k] = value * (lam_k - 1)
             entries[k * size + i] = value * (lam_i - 1)
-    g_one = [integral_t_j1_hyp1f2(x) for x in lam]
     g_b = [integral_t_j1_hyp1f2(x) for x in blam]
     rhs_torque = [(j2[i] - b * b * b2[i]) / lam[i] for i in range(n)]
     rhs_constant = [-(g_one[i] - g_b[i]) / squares[i] for i in range(n)]
