@@ -298,7 +298,10 @@ def solve_rotation_fields(graded: GradedMesh, degree: int, loads) -> list[Rotati
     top = mesh.facets_satisfying(lambda x: x[1] == graded.truncation, boundaries_only=True)
     fixed = basis.get_dofs(stick).all()
     free = np.setdiff1d(np.arange(basis.N), fixed)
-    factor = splu(stiffness[free][:, free].tocsc())
+    # symmetric positive definite (Dirichlet data on the stick disc): a fill-reducing ordering of A + A^T and no
+    # pivoting, as for a Cholesky factor; a third of the time of SuperLU's default (COLAMD with partial pivoting)
+    factor = splu(stiffness[free][:, free].tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                  options={"SymmetricMode": True})
     coupling = stiffness[free][:, fixed]
     fields = []
     for load in loads:
