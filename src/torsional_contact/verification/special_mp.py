@@ -290,7 +290,7 @@ def sinh_excess_values(points, xi, method: str = "series", lengths=None, blocks=
         points = [t.mid() for t in points]
     zero = flint.arb(0)
     prec = flint.ctx.prec
-    values = [zero] * (n_points * n_xi)  # row-major; exact zeros beyond each row's length
+    values = np.full(n_points * n_xi, zero, dtype=object)  # row-major; exact zeros beyond each row's length
     pending = np.arange(n_xi)[None, :] < np.array(lengths, dtype=np.int64)[:, None]  # entries still to compute
     xi_blocks = {}  # (block, panels) -> the nodes of its first panels as an arb_mat
     try:
@@ -319,24 +319,27 @@ def sinh_excess_values(points, xi, method: str = "series", lengths=None, blocks=
                 pending[i, start:start + stop] = False
         rows, columns = np.nonzero(pending)
         sizes = np.array(t_float)[rows] * xi_float[columns]
+        xi_objects, point_objects = np.empty(n_xi, dtype=object), np.empty(n_points, dtype=object)
+        xi_objects[:], point_objects[:] = list(xi), points  # the arb themselves: numpy applies their operators
         # the products >= 1/2 at the working precision, the others by their cancelled bits (whole matrix at once)
         for extra, members in _cancelled_bits_groups(sizes):
-            flat = (rows[members] * n_xi + columns[members]).tolist()
             if extra < 0:
                 continue  # A(0) = 0 exactly (values holds exact zeros)
             flint.ctx.prec = 2 * prec + 80  # exact products of two midpoints (nodes have up to prec + 64 bits)
-            products = [xi[k] * points[i] for i, k in zip(rows[members].tolist(), columns[members].tolist(),
-                                                          strict=True)]
+            products = xi_objects[columns[members]] * point_objects[rows[members]]
             flint.ctx.prec = prec + extra
-            excess = [p.sinh() - p for p in products]
+            excess = _SINH(products) - products
             flint.ctx.prec = prec
             if extra > 0:  # rounded to the working precision (the others are at it)
-                excess = [+v for v in excess]
-            for position, v in zip(flat, excess, strict=True):
-                values[position] = v
+                excess = +excess
+            values[rows[members] * n_xi + columns[members]] = excess
     finally:
         flint.ctx.prec = prec
-    return values
+    return values.tolist()
+
+
+#: Arb's sinh elementwise over numpy arrays of arb (``sinh_excess_values``).
+_SINH = np.frompyfunc(flint.arb.sinh, 1, 1)
 
 
 def _cancelled_bits_groups(sizes):
