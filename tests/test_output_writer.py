@@ -489,6 +489,22 @@ def test_provenance_writers_keep_their_signatures(tmp_path):
         provenance.write_json(tmp_path, {"x": 1})
 
 
+def test_provenance_records_the_installed_versions():
+    """The package versions (read once per process) are those the installed metadata gives now."""
+    from importlib import metadata
+
+    packages = provenance.provenance(method="m")["packages"]
+    for name in provenance._PACKAGES:
+        try:
+            expected = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            expected = None
+        assert packages[name] == expected
+    assert list(packages)[: len(provenance._PACKAGES)] == list(provenance._PACKAGES)
+    packages["numpy"] = "changed"  # each record gets its own dictionary
+    assert provenance.provenance()["packages"]["numpy"] != "changed"
+
+
 def test_save_figure_through_the_writer(tmp_path, monkeypatch):
     monkeypatch.syspath_prepend(str(ROOT / "workflow" / "scripts"))  # the workflow's figure helpers
     import matplotlib.pyplot as plt

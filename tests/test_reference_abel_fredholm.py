@@ -445,6 +445,180 @@ def test_factored_exponentials_against_direct_sinh(rate, digits, layout):
                         assert factored[i, k].contains(mp_to_arb(exact))
 
 
+def _key(value):
+    """Midpoint and radius of an arb, exactly (for bit-for-bit comparisons)."""
+    return value.mid().man_exp(), value.rad().man_exp()
+
+
+def _sinh_excess_rows(points, xi, method, lengths, blocks):
+    """A(xi_k t_i) row by row, entry by entry, as ``sinh_excess_matrix`` formed them before it took the whole
+    matrix at once (a block's panels all formed, then cut to the row's length): the reference of the bit-for-bit
+    test below."""
+    prec = flint.ctx.prec
+    rows = []
+    try:
+        for t, length in zip(points, lengths, strict=True):
+            t_float = float(t)
+            if method == "cancel":
+                t = t.mid()
+            values = [None] * length
+            for start, mids, offsets in blocks:
+                if start >= length or float(xi[start]) * t_float < 0.5:
+                    continue
+                xi_block = flint.arb_mat(len(mids), len(offsets), list(xi[start:start + len(mids) * len(offsets)]))
+                flint.ctx.prec = 2 * prec + 80
+                mid_products, offset_products = [c * t for c in mids], [d * t for d in offsets]
+                flint.ctx.prec = prec + 8
+                up_mid, up_offset = [v.exp() for v in mid_products], [v.exp() for v in offset_products]
+                growth = flint.arb_mat(len(mids), 1, up_mid) * flint.arb_mat(1, len(offsets), up_offset)
+                decay = (flint.arb_mat(len(mids), 1, [1 / v for v in up_mid])
+                         * flint.arb_mat(1, len(offsets), [1 / v for v in up_offset]))
+                half_difference, linear = (growth - decay) / 2, xi_block * t
+                flint.ctx.prec = prec
+                block = (half_difference - linear).entries()
+                stop = min(length - start, len(block))
+                values[start:start + stop] = block[:stop]
+            for k in range(length):
+                if values[k] is not None:
+                    continue
+                size = float(xi[k]) * t_float
+                extra = 0 if size >= 0.5 else (-1 if size == 0.0 else special_mp._cancelled_bits(size))
+                if extra < 0:
+                    values[k] = flint.arb(0)
+                    continue
+                flint.ctx.prec = 2 * prec + 80
+                product = xi[k] * t
+                flint.ctx.prec = prec + extra
+                value = product.sinh() - product
+                flint.ctx.prec = prec
+                values[k] = +value if extra > 0 else value
+            rows.append(values + [flint.arb(0)] * (len(xi) - length))
+    finally:
+        flint.ctx.prec = prec
+    return rows
+
+
+@pytest.mark.parametrize("b", ["0.02", "0.6", "0.97"])
+def test_sinh_excess_matrix_is_the_entrywise_evaluation(b):
+    """``sinh_excess_matrix`` groups the products of the whole matrix by their cancelled bits and forms only
+    the panels of a block that a row reaches: bit for bit (midpoints and radii) the entry-by-entry evaluation
+    (``_sinh_excess_rows``), for both methods, at a solve's nodes and xi-layer, with rows cut short anywhere
+    (inside a block, at its edges, before it) and points exact and with radii."""
+    state = solve_state(b, nodes_for_digits(float(b), 20), 25)
+    xi, blocks = state._xi, state._xi_blocks
+    assert blocks
+    with working_digits(25):
+        prec = flint.ctx.prec
+        points = [*state.nodes[::3], state.stick_radius, flint.arb(1),
+                  flint.arb("0.5") + flint.arb(0, flint.arb(2) ** (-prec)), flint.arb(0)]
+        start, mids, offsets = blocks[0]
+        cuts = [len(xi), 0, start, start + 1, start + len(offsets), start + len(offsets) + 5,
+                start + len(mids) * len(offsets) - 1, 3]
+        lengths = [cuts[i % len(cuts)] for i in range(len(points))]
+        for method in ("sharp", "cancel"):
+            for layout, row_lengths in (((), None), (blocks, None), (blocks, lengths)):
+                matrix = special_mp.sinh_excess_matrix(points, xi, method=method, lengths=row_lengths, blocks=layout)
+                values = special_mp.sinh_excess_values(points, xi, method=method, lengths=row_lengths, blocks=layout)
+                reference = _sinh_excess_rows(points, xi, method, row_lengths or [len(xi)] * len(points), layout)
+                for i, row in enumerate(reference):
+                    for k, expected in enumerate(row):
+                        assert _key(matrix[i, k]) == _key(expected), (method, i, k)
+                        assert _key(values[i * len(xi) + k]) == _key(expected)
+
+
+@pytest.mark.parametrize("digits", [20, 49, 100])
+def test_bessel_k2_i2_with_shared_digamma_weights(digits):
+    """``bessel_k2_i2`` takes the weights psi(k+1) + psi(k+3) of its K2 series from a table per precision
+    (``_digamma_weights``, extended on demand): bit for bit the series with the harmonic numbers summed inline,
+    whether the table is empty, short or long, and within its ball of mpmath's K2 and I2 at three times the
+    digits (an independent evaluation)."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        for text in ("1e-6", "0.3", "2.5", "17", "40.25", "66"):
+            x = flint.arb(text).mid()
+            special_mp._DIGAMMA_WEIGHTS.clear()
+            first = special_mp.bessel_k2_i2(x)
+            second = special_mp.bessel_k2_i2(x)  # a filled table
+            flint.ctx.prec = prec + math.ceil(2.9 * float(x)) + 24
+            try:  # the series as it was written before the table: the harmonic numbers summed in the loop
+                quarter = x * x / 4
+                tau = quarter / 2
+                gamma = flint.arb.const_euler()
+                harmonic_k, harmonic_k2 = flint.arb(0), flint.arb(3) / 2
+                i2 = tau
+                psi_sum = (harmonic_k + harmonic_k2 - 2 * gamma) * tau
+                limit = flint.arb(2) ** (-flint.ctx.prec)
+                k = 0
+                while True:
+                    k += 1
+                    tau = tau * quarter / (k * (k + 2))
+                    harmonic_k += flint.arb(1) / k
+                    harmonic_k2 += flint.arb(1) / (k + 2)
+                    i2 += tau
+                    psi_sum += (harmonic_k + harmonic_k2 - 2 * gamma) * tau
+                    if k > float(x) and tau * (1 + math.log(k + 3)) < limit * i2:
+                        break
+                k2 = 2 / (x * x) - flint.arb(1) / 2 - (x / 2).log() * i2 + psi_sum / 2
+            finally:
+                flint.ctx.prec = prec
+            inline = (+k2, +i2)
+            for values in (first, second):
+                assert [_key(v) for v in values] == [_key(v) for v in inline]
+            with mpmath.workdps(3 * digits):
+                point = _mp(x)
+                assert first[0].contains(mp_to_arb(mpmath.besselk(2, point)))
+                assert first[1].contains(mp_to_arb(mpmath.besseli(2, point)))
+
+
+def test_bessel_ratio_asymptotic_by_horner_in_c():
+    """Above the switch, ``bessel_ratio`` sums the Hankel expansions of all the nodes with the same number of
+    terms at once (``arb_poly.evaluate``): bit for bit the Horner loop term by term in Python (also its own
+    fallback above 1024 bits), and within 2^(8 - prec) relative of mpmath's K2/I2 at three times the digits."""
+    for digits in (30, 49, 320):
+        with working_digits(digits):
+            prec = flint.ctx.prec
+            switch = (prec * math.log(2.0) + 24.0) / 2.0
+            points = [flint.arb(switch * f).mid() for f in (1.0, 1.001, 1.3, 2.0, 7.5)]
+            ratios = special_mp.bessel_ratio(points)
+            for x, ratio in zip(points, ratios, strict=True):
+                count = special_mp.expansion_terms(float(x), 2.0)
+                kappa = special_mp._hankel_arb(2, count, prec)
+                inverse = 1 / x
+                numerator, denominator = flint.arb(0), flint.arb(0)
+                for k in range(count - 1, -1, -1):
+                    numerator = numerator * inverse + kappa[k]
+                    denominator = denominator * inverse + (kappa[k] if k % 2 == 0 else -kappa[k])
+                loop = flint.arb.pi() * (-2 * x).exp() * numerator / denominator
+                assert _key(ratio) == _key(loop)
+                if digits < 100:
+                    with mpmath.workdps(3 * digits):
+                        exact = mpmath.besselk(2, _mp(x)) / mpmath.besseli(2, _mp(x))
+                        assert abs(_mp(ratio) / exact - 1) < mpmath.mpf(2) ** (8 - prec)
+
+
+@pytest.mark.parametrize("digits", [30, 49])
+def test_tail_integrals_against_the_incomplete_gamma_function(digits):
+    """J_k(eps) = eps^(k+1/2) Gamma(-k-1/2, eps X) of ``tail_integrals`` (constants X^(-1/2), 1/X, k + 1/2
+    cached per (X, count, precision)) against mpmath's incomplete gamma function at three times the digits (an
+    independent evaluation): relative error below 2^(16 - prec) for every k, eps = 0 (X^(-k-1/2)/(k + 1/2))
+    included, on either side of the pivot k = eps X of the recurrences; a second call gives the same bits."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        start = kernels_mp.xi_quadrature(0.5, digits).asymptotic_start
+        count = special_mp.expansion_terms(start)
+        for eps_text in ("0", "1e-5", "0.03", "0.3", "1", "1.7"):
+            eps = flint.arb(eps_text)
+            values = special_mp.tail_integrals(eps, start, count)
+            again = special_mp.tail_integrals(eps, start, count)
+            assert [_key(v) for v in values] == [_key(v) for v in again]
+            with mpmath.workdps(3 * digits):
+                e, x = _mp(eps.mid()), mpmath.mpf(start)
+                for k in sorted({0, 1, count // 3, count // 2, count - 1}):
+                    s = k + mpmath.mpf(1) / 2
+                    exact = x ** (-s) / s if e == 0 else e**s * mpmath.gammainc(-s, e * x)
+                    assert abs(_mp(values[k]) / exact - 1) < mpmath.mpf(2) ** (16 - prec), (eps_text, k)
+
+
 @pytest.mark.parametrize("x", ["0", "1e-9", "0.3", "7", "60", "82", "150", "400"])
 @pytest.mark.parametrize("digits", [30, 49])
 def test_integral_x_i1_pair_against_the_series(x, digits):

@@ -66,6 +66,7 @@ import time
 import warnings
 from dataclasses import dataclass, field
 from functools import cached_property
+from itertools import chain
 
 import flint
 
@@ -80,7 +81,7 @@ from .kernels_mp import (
     xi_layer,
     xi_sum_truncation,
 )
-from .special_mp import sinh_excess_matrix
+from .special_mp import sinh_excess_matrix, sinh_excess_values
 
 __all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "interface_points", "solve_state"]
 
@@ -259,14 +260,15 @@ class AbelFredholmState:
     @cached_property
     def _profiles(self) -> tuple:
         """(a_k, y_k): bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail, from the solve's A(xi_k t_j)."""
-        a_entries, scale, xi, side_full, side_excess, column = self._interpolant
+        a_values, scale, xi, side_full, side_excess, column = self._interpolant
         n, n_xi = self.n_nodes, len(xi)
         with working_digits(self.work_digits):
             zero = flint.arb(0)
             two_over_pi = 2 / flint.arb.pi()
             weights_g = [c * g for c, g in zip(column, self.density, strict=True)]
-            sum_a = _entries(flint.arb_mat(n_xi, n, [a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
-                             * _column(weights_g))
+            columns = chain.from_iterable(a_values[k:n * n_xi:n_xi] for k in range(n_xi))  # A(xi_k t_j) at (k, j)
+            transposed = flint.arb_mat(n_xi, n, list(columns))
+            sum_a = _entries(transposed * _column(weights_g))
             sum_c = sum((c * tj for c, tj in zip(weights_g, self.nodes, strict=True)), zero)
             profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
                               for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
@@ -390,8 +392,8 @@ class AbelFredholmState:
     def _d_function(self, t_points, psi_points) -> list:
         """D(t) = 2 Omega t - t arcsech(t) - bracket(t) on [b, 1] (F7), t = cos(psi); bracket from its series."""
         edge, coefficients = self._slip_zone
-        root2 = flint.arb(2).sqrt()
-        x_points = [2 * root2 * (psi / 2).sin() / edge - 1 for psi in psi_points]  # u = sqrt(1 - t) = sqrt2 sin(psi/2)
+        two_root2 = 2 * flint.arb(2).sqrt()
+        x_points = [two_root2 * (psi / 2).sin() / edge - 1 for psi in psi_points]  # u = sqrt(1 - t) = sqrt2 sin(psi/2)
         series = _chebyshev_values(coefficients, x_points)
         omega2 = 2 * self.rotation_constant
         return [t * (omega2 - _arcsech(t) - h) for t, h in zip(t_points, series, strict=True)]
@@ -413,17 +415,19 @@ class AbelFredholmState:
                 # no near singularity at v = 0 when r = 1 (sin(psi + psi_r) = sin(psi) cancels)
                 left = float((2 * psi_r).sqrt()) if r < 1 else float(length)
                 right = float((half_pi - psi_r).sqrt() - length)
+                two_psi_r = 2 * psi_r
                 for lo, hi in _graded_panels(float(length), left, right, length):
                     half, mid = (hi - lo) / 2, (hi + lo) / 2
-                    for xj, wj in zip(x_nodes, x_weights, strict=True):
+                    for xj, half_wj in zip(x_nodes, [half * wj for wj in x_weights], strict=True):
                         v = mid + half * xj
-                        psi = psi_r + v * v
+                        v2 = v * v
+                        psi = psi_r + v2
                         s_psi, c_psi = psi.sin(), psi.cos()
-                        factor = 2 * v * c_psi * s_psi / ((v * v).sin() * (2 * psi_r + v * v).sin()).sqrt()
+                        factor = 2 * v * c_psi * s_psi / (v2.sin() * (two_psi_r + v2).sin()).sqrt()
                         t_all.append(c_psi)
                         psi_all.append(psi)
-                        w_all.append(half * wj * factor)
-                        owner.append(index)
+                        w_all.append(half_wj * factor)
+                    owner.extend([index] * m)
             sums = [flint.arb(0)] * len(radii)
             if t_all:
                 values = self._d_function(t_all, psi_all)
@@ -484,10 +488,10 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
 
         # A(xi_k t_i) at the nodes and at t = b; weighted transpose for the products
         points = t + [b]
-        a_points = sinh_excess_matrix(points, xi, method="sharp", blocks=layer.blocks)
-        a_entries = a_points.entries()  # row-major: A(xi_k t_j) at j * len(xi) + k
         n_xi = len(xi)
-        weighted = flint.arb_mat(n_xi, n, [scale[k] * a_entries[j * n_xi + k] for k in range(n_xi) for j in range(n)])
+        a_values = sinh_excess_values(points, xi, method="sharp", blocks=layer.blocks)  # A(xi_k t_j) at j n_xi + k
+        a_points = flint.arb_mat(n + 1, n_xi, a_values)
+        weighted = flint.arb_mat(n_xi, n, [s * v for k, s in enumerate(scale) for v in a_values[k:n * n_xi:n_xi]])
         moment_row = _row(xi) * weighted  # sum_k scale_k xi_k A(xi_k t_j)
         moment_nodes = [moment_row[0, j] for j in range(n)]
         moment_points = _entries(a_points * _column(s * x for s, x in zip(scale, xi, strict=True)))
@@ -519,7 +523,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         rotation = omega_big - torque_rotation(work_digits) * torque
 
         # the xi-profiles of the interpolant are formed from these on first use (AbelFredholmState._profiles)
-        interpolant = (a_entries, scale, xi, side_full, side_excess, column)
+        interpolant = (a_values, scale, xi, side_full, side_excess, column)
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),

@@ -39,6 +39,7 @@ __all__ = [
     "i2_excess",
     "sinh_excess",
     "sinh_excess_matrix",
+    "sinh_excess_values",
     "integral_x_i1",
     "integral_x_i1_excess",
     "integral_x_i1_pair",
@@ -67,11 +68,12 @@ def expansion_terms(x: float, scale: float = 1.0) -> int:
     """
     prec = flint.ctx.prec
     count = 8
-    while count < scale * x:
-        log_term = math.lgamma(count + 1) - count * math.log(scale * x)
-        if log_term < -(prec + 20) * math.log(2.0):
-            break
-        count += 8
+    if count < scale * x:
+        log_size, target = math.log(scale * x), -(prec + 20) * math.log(2.0)
+        while count < scale * x:
+            if math.lgamma(count + 1) - count * log_size < target:
+                break
+            count += 8
     return count
 
 
@@ -83,27 +85,29 @@ def bessel_k2_i2(x):
     The terms reach exp(x) while K2 ~ exp(-x): the sums run with 2.9 x + 24 extra bits
     (the cancellation costs 2 x / ln 2 bits), so both are returned to the working
     precision.  Meant for x up to ~ the working precision in nats (above that,
-    ``bessel_ratio`` uses the Hankel expansions).
+    ``bessel_ratio`` uses the Hankel expansions).  The weights psi(k+1) + psi(k+3) (harmonic
+    numbers and Euler's gamma at that raised precision) do not depend on x: ``_digamma_weights``.
     """
     prec = flint.ctx.prec
     xf = float(x)
     flint.ctx.prec = prec + math.ceil(2.9 * xf) + 24
     try:
+        weights = _digamma_weights(flint.ctx.prec)
+        size = len(weights)
         quarter = x * x / 4
         tau = quarter / 2  # k = 0: (x/2)^2 / (0! 2!)
-        gamma = flint.arb.const_euler()
-        harmonic_k, harmonic_k2 = flint.arb(0), flint.arb(3) / 2  # H_0, H_2
         i2 = tau
-        psi_sum = (harmonic_k + harmonic_k2 - 2 * gamma) * tau
+        psi_sum = weights[0] * tau
         limit = flint.arb(2) ** (-flint.ctx.prec)  # an arb: 2.0**-prec underflows above 1074 bits
         k = 0
         while True:
             k += 1
+            if k == size:
+                weights = _digamma_weights(flint.ctx.prec, 2 * k)
+                size = len(weights)
             tau = tau * quarter / (k * (k + 2))
-            harmonic_k += flint.arb(1) / k
-            harmonic_k2 += flint.arb(1) / (k + 2)
             i2 += tau
-            psi_sum += (harmonic_k + harmonic_k2 - 2 * gamma) * tau
+            psi_sum += weights[k] * tau
             if k > xf and tau * (1 + math.log(k + 3)) < limit * i2:
                 break
         k2 = 2 / (x * x) - flint.arb(1) / 2 - (x / 2).log() * i2 + psi_sum / 2
@@ -112,34 +116,93 @@ def bessel_k2_i2(x):
     return +k2, +i2
 
 
+#: psi(k+1) + psi(k+3) of ``bessel_k2_i2`` per precision: [weights, H_k, H_(k+2)] (``_digamma_weights``).
+_DIGAMMA_WEIGHTS: dict = {}
+_DIGAMMA_WEIGHTS_LIMIT = 4096
+
+
+def _digamma_weights(prec: int, count: int = 64) -> list:
+    """[H_k + H_(k+2) - 2 gamma for k < count] (at least) at ``prec`` bits, H the harmonic numbers (H_2 = 3/2):
+    psi(k+1) + psi(k+3) as ``bessel_k2_i2`` sums them, each H_k the running sum of 1/k at ``prec`` bits (so the
+    same bits for every x with that raised precision); cached per precision, extended on demand."""
+    entry = _DIGAMMA_WEIGHTS.get(prec)
+    if entry is None:
+        if len(_DIGAMMA_WEIGHTS) > _DIGAMMA_WEIGHTS_LIMIT:
+            _DIGAMMA_WEIGHTS.clear()
+        saved = flint.ctx.prec
+        flint.ctx.prec = prec
+        try:
+            harmonic_k, harmonic_k2 = flint.arb(0), flint.arb(3) / 2  # H_0, H_2
+            entry = [[harmonic_k + harmonic_k2 - 2 * flint.arb.const_euler()], harmonic_k, harmonic_k2]
+        finally:
+            flint.ctx.prec = saved
+        _DIGAMMA_WEIGHTS[prec] = entry
+    weights = entry[0]
+    if len(weights) < count:
+        saved = flint.ctx.prec
+        flint.ctx.prec = prec
+        try:
+            gamma = flint.arb.const_euler()
+            harmonic_k, harmonic_k2 = entry[1], entry[2]
+            for k in range(len(weights), count):
+                harmonic_k += flint.arb(1) / k
+                harmonic_k2 += flint.arb(1) / (k + 2)
+                weights.append(harmonic_k + harmonic_k2 - 2 * gamma)
+            entry[1], entry[2] = harmonic_k, harmonic_k2
+        finally:
+            flint.ctx.prec = saved
+    return weights
+
+
 def bessel_ratio(xi):
     """rho(xi) = K2(xi) / I2(xi) for a sequence of exact xi > 0, at full working precision.
 
     Below (prec ln 2 + 24)/2: ``bessel_k2_i2`` (power series with extra bits); above: the
     ratio of the Hankel expansions, pi exp(-2 xi) sum kappa_k xi^-k / sum (-1)^k kappa_k
-    xi^-k (relative error exp(-2 xi) < 2^-prec e^-24).
+    xi^-k (relative error exp(-2 xi) < 2^-prec e^-24), both sums by Horner's rule, in C for
+    all the nodes with the same number of terms at once (``_bessel_ratio_asymptotic``).
     """
     switch = (flint.ctx.prec * math.log(2.0) + 24.0) / 2.0
-    out = []
-    for x in xi:
-        if float(x) >= switch:
-            out.append(_bessel_ratio_asymptotic(x))
+    out = [None] * len(xi)
+    far = {}  # number of expansion terms -> indices of the nodes above the switch
+    for index, x in enumerate(xi):
+        xf = float(x)
+        if xf >= switch:
+            far.setdefault(expansion_terms(xf, 2.0), []).append(index)
         else:
             k2, i2 = bessel_k2_i2(x)
-            out.append(k2 / i2)
+            out[index] = k2 / i2
+    for count, indices in far.items():
+        for index, value in zip(indices, _bessel_ratio_asymptotic([xi[i] for i in indices], count), strict=True):
+            out[index] = value
     return out
 
 
-def _bessel_ratio_asymptotic(x):
-    count = expansion_terms(float(x), 2.0)
+def _bessel_ratio_asymptotic(points, count: int) -> list:
+    """pi exp(-2 x) sum_k kappa_k x^-k / sum_k (-1)^k kappa_k x^-k, k < count, at the exact ``points``.
+
+    Horner's rule in 1/x from the highest term (``arb_poly.evaluate``, term by term the same
+    operations as the loop it replaced: Arb evaluates by Horner's rule below 1024 bits; above, the
+    loop in Python)."""
     kappa = _hankel_arb(2, count, flint.ctx.prec)
-    inverse = 1 / x
-    numerator, denominator = flint.arb(0), flint.arb(0)
-    for k in range(count - 1, -1, -1):
-        c = kappa[k]
-        numerator = numerator * inverse + c
-        denominator = denominator * inverse + (c if k % 2 == 0 else -c)
-    return flint.arb.pi() * (-2 * x).exp() * numerator / denominator
+    inverses = [1 / x for x in points]
+    if flint.ctx.prec < 1024 and count > 2:
+        numerators = flint.arb_poly(list(kappa)).evaluate(inverses, algorithm="iter")
+        denominators = flint.arb_poly([c if k % 2 == 0 else -c for k, c in enumerate(kappa)]).evaluate(
+            inverses, algorithm="iter")
+    else:
+        numerators, denominators = [], []
+        for inverse in inverses:
+            numerator, denominator = flint.arb(0), flint.arb(0)
+            for k in range(count - 1, -1, -1):
+                c = kappa[k]
+                numerator = numerator * inverse + c
+                denominator = denominator * inverse + (c if k % 2 == 0 else -c)
+            numerators.append(numerator)
+            denominators.append(denominator)
+    pi = flint.arb.pi()
+    return [pi * (-2 * x).exp() * numerator / denominator
+            for x, numerator, denominator in zip(points, numerators, denominators, strict=True)]
 
 
 def i2_excess(x):
@@ -204,6 +267,12 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
     precision (the products of two rounded exponentials), rounded once: rigorous balls,
     as tight as the direct sinh's.
     """
+    points = list(points)
+    return flint.arb_mat(len(points), len(xi), sinh_excess_values(points, xi, method, lengths, blocks))
+
+
+def sinh_excess_values(points, xi, method: str = "series", lengths=None, blocks=()) -> list:
+    """The entries of ``sinh_excess_matrix`` (the same arguments) as a row-major list: A(xi_k t_i) at i len(xi) + k."""
     if method not in ("series", "sharp", "cancel"):
         raise ValueError(f"method must be 'series', 'sharp' or 'cancel', got {method!r}")
     points = list(points)
@@ -213,57 +282,64 @@ def sinh_excess_matrix(points, xi, method: str = "series", lengths=None, blocks=
     elif len(lengths) != len(points) or any(not 0 <= k <= n_xi for k in lengths):
         raise ValueError(f"lengths must give one count in [0, {n_xi}] per point")
     if method == "series":
-        return _sinh_excess_matrix_series(points, xi, lengths)
-    xi_float = [float(x) for x in xi]
-    xi_array = np.array(xi_float)
+        return _sinh_excess_series_values(points, xi, lengths)
+    n_points = len(points)
+    xi_float = np.array([float(x) for x in xi])
+    t_float = [float(t) for t in points]
+    if method == "cancel":
+        points = [t.mid() for t in points]
     zero = flint.arb(0)
     prec = flint.ctx.prec
-    entries = []
-    factored = [(start, mids, offsets,
-                 flint.arb_mat(len(mids), len(offsets), list(xi[start:start + len(mids) * len(offsets)])))
-                for start, mids, offsets in blocks]
+    values = np.full(n_points * n_xi, zero, dtype=object)  # row-major; exact zeros beyond each row's length
+    pending = np.arange(n_xi)[None, :] < np.array(lengths, dtype=np.int64)[:, None]  # entries still to compute
+    xi_blocks = {}  # (block, panels) -> the nodes of its first panels as an arb_mat
     try:
-        for t, length in zip(points, lengths, strict=True):
-            t_float = float(t)
-            if method == "cancel":
-                t = t.mid()
-            values = [None] * length
-            for start, mids, offsets, xi_block in factored:
-                if start >= length or xi_float[start] * t_float < 0.5:
+        for i, (t, t_f, length) in enumerate(zip(points, t_float, lengths, strict=True)):
+            for index, (start, mids, offsets) in enumerate(blocks):
+                if start >= length or float(xi_float[start]) * t_f < 0.5:
                     continue
+                # only the panels the row reaches (every entry of the outer products is formed on its own)
+                panels = min(len(mids), -(-(length - start) // len(offsets)))
+                mids = mids[:panels]
+                if (index, panels) not in xi_blocks:
+                    xi_blocks[index, panels] = flint.arb_mat(panels, len(offsets),
+                                                             list(xi[start:start + panels * len(offsets)]))
                 flint.ctx.prec = 2 * prec + 80  # exact products c_p t, d_j t
                 mid_products, offset_products = [c * t for c in mids], [d * t for d in offsets]
                 flint.ctx.prec = prec + 8
                 up_mid, up_offset = [v.exp() for v in mid_products], [v.exp() for v in offset_products]
                 down_mid, down_offset = [1 / v for v in up_mid], [1 / v for v in up_offset]
-                growth = flint.arb_mat(len(mids), 1, up_mid) * flint.arb_mat(1, len(offsets), up_offset)
-                decay = flint.arb_mat(len(mids), 1, down_mid) * flint.arb_mat(1, len(offsets), down_offset)
-                half_difference, linear = (growth - decay) / 2, xi_block * t
+                growth = flint.arb_mat(panels, 1, up_mid) * flint.arb_mat(1, len(offsets), up_offset)
+                decay = flint.arb_mat(panels, 1, down_mid) * flint.arb_mat(1, len(offsets), down_offset)
+                half_difference, linear = (growth - decay) / 2, xi_blocks[index, panels] * t
                 flint.ctx.prec = prec
                 block = (half_difference - linear).entries()  # rounded once, to the working precision
                 stop = min(length - start, len(block))
-                values[start:start + stop] = block[:stop]
-            pending = [k for k in range(length) if values[k] is None]
+                values[i * n_xi + start:i * n_xi + start + stop] = block[:stop]
+                pending[i, start:start + stop] = False
+        rows, columns = np.nonzero(pending)
+        sizes = np.array(t_float)[rows] * xi_float[columns]
+        xi_objects, point_objects = np.empty(n_xi, dtype=object), np.empty(n_points, dtype=object)
+        xi_objects[:], point_objects[:] = list(xi), points  # the arb themselves: numpy applies their operators
+        # the products >= 1/2 at the working precision, the others by their cancelled bits (whole matrix at once)
+        for extra, members in _cancelled_bits_groups(sizes):
+            if extra < 0:
+                continue  # A(0) = 0 exactly (values holds exact zeros)
             flint.ctx.prec = 2 * prec + 80  # exact products of two midpoints (nodes have up to prec + 64 bits)
-            products = [xi[k] * t for k in pending]
-            # groups: the products >= 1/2 at the working precision, the others by their cancelled bits
-            for extra, members in _cancelled_bits_groups(xi_array[pending] * t_float):
-                if extra < 0:
-                    for m in members:
-                        values[pending[m]] = zero  # A(0) = 0 exactly
-                    continue
-                flint.ctx.prec = prec + extra
-                excess = [products[m].sinh() - products[m] for m in members]
-                flint.ctx.prec = prec
-                if extra > 0:  # rounded to the working precision (the others are at it)
-                    excess = [+v for v in excess]
-                for m, v in zip(members, excess, strict=True):
-                    values[pending[m]] = v
-            entries.extend(values)
-            entries.extend([zero] * (n_xi - length))
+            products = xi_objects[columns[members]] * point_objects[rows[members]]
+            flint.ctx.prec = prec + extra
+            excess = _SINH(products) - products
+            flint.ctx.prec = prec
+            if extra > 0:  # rounded to the working precision (the others are at it)
+                excess = +excess
+            values[rows[members] * n_xi + columns[members]] = excess
     finally:
         flint.ctx.prec = prec
-    return flint.arb_mat(len(points), n_xi, entries)
+    return values.tolist()
+
+
+#: Arb's sinh elementwise over numpy arrays of arb (``sinh_excess_values``).
+_SINH = np.frompyfunc(flint.arb.sinh, 1, 1)
 
 
 def _cancelled_bits_groups(sizes):
@@ -295,7 +371,7 @@ def _cancelled_bits(size: float) -> int:
     return 32 * math.ceil((2.0 * logarithm + 8) / 32)
 
 
-def _sinh_excess_matrix_series(points, xi, lengths) -> flint.arb_mat:
+def _sinh_excess_series_values(points, xi, lengths) -> list:
     xi_float = [float(x) for x in xi]
     entries = []
     zero = flint.arb(0)
@@ -308,7 +384,7 @@ def _sinh_excess_matrix_series(points, xi, lengths) -> flint.arb_mat:
             else:
                 entries.append(sinh_excess(product))
         entries.extend([zero] * (len(xi) - length))
-    return flint.arb_mat(len(points), len(xi), entries)
+    return entries
 
 
 def integral_x_i1(x):
@@ -437,6 +513,19 @@ def tail_coefficients(count: int):
     return _tail_coefficients_cached(8 * math.ceil(count / 8))[:count]
 
 
+@functools.lru_cache(maxsize=64)
+def _tail_constants(start: float, count: int, prec: int) -> tuple:
+    """(X, X^(-1/2), 1/X, (k + 1/2 for k < count)) at ``prec`` bits for ``tail_integrals`` (the same for every eps)."""
+    saved = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        x = flint.arb(start)
+        half = flint.arb(1) / 2
+        return x, x ** (-half), 1 / x, tuple(k + half for k in range(count))
+    finally:
+        flint.ctx.prec = saved
+
+
 def tail_integrals(eps, start, count: int):
     """J_k(eps) = int_X^inf exp(-eps xi) xi^(-k-3/2) d xi, k < count, eq. (M4); X = ``start``.
 
@@ -449,23 +538,27 @@ def tail_integrals(eps, start, count: int):
     eps = eps.mid()
     flint.ctx.prec = prec + 20
     try:
-        x = flint.arb(start)
-        half = flint.arb(1) / 2
+        x, root, inverse, shifted = _tail_constants(start, count, flint.ctx.prec)  # X, X^(-1/2), 1/X, k + 1/2
         if eps.is_zero():
-            return [+(x ** (-k - half) / (k + half)) for k in range(count)]
+            return [+(x ** -s / s) for s in shifted]
         decay = (-eps * x).exp()
-        powers = [decay * x ** (-half)]  # exp(-eps X) X^(-k-1/2)
-        inverse = 1 / x
+        power = decay * root
+        powers = [power]  # exp(-eps X) X^(-k-1/2)
         for _ in range(1, count):
-            powers.append((powers[-1] * inverse).mid())
+            power = (power * inverse).mid()
+            powers.append(power)
         pivot = min(count - 1, int(float(eps) * start))
         j = [None] * count
-        gamma = to_full_accuracy(lambda z, a: z.gamma_upper(a), (eps * x).mid(), -pivot - half)
-        j[pivot] = (eps ** (pivot + half) * gamma).mid()
+        gamma = to_full_accuracy(lambda z, a: z.gamma_upper(a), (eps * x).mid(), -shifted[pivot])
+        value = (eps ** shifted[pivot] * gamma).mid()
+        j[pivot] = value
         for k in range(pivot + 1, count):  # stable for k > eps X
-            j[k] = ((powers[k] - eps * j[k - 1]) / (k + half)).mid()
+            value = ((powers[k] - eps * value) / shifted[k]).mid()
+            j[k] = value
+        value = j[pivot]
         for k in range(pivot, 0, -1):  # stable for k < eps X
-            j[k - 1] = ((powers[k] - (k + half) * j[k]) / eps).mid()
+            value = ((powers[k] - shifted[k] * value) / eps).mid()
+            j[k - 1] = value
     finally:
         flint.ctx.prec = prec
     return [+v for v in j]
