@@ -9,7 +9,8 @@ from __future__ import annotations
 import numpy as np
 from scipy import linalg
 
-__all__ = ["equilibrate", "equilibrated_solve", "reciprocal_condition", "scalings"]
+__all__ = ["equilibrate", "equilibrated_fortran", "equilibrated_solve", "reciprocal_condition", "scalings",
+           "scaled_column_abs_sums"]
 
 
 def _max_abs(matrix, axis):
@@ -17,11 +18,39 @@ def _max_abs(matrix, axis):
     return np.maximum(np.max(matrix, axis=axis), -np.min(matrix, axis=axis))
 
 
+#: Matrices of at least this many entries are summed without a temporary (8 MB).
+_LARGE = 1 << 20
+#: Entries per block of rows in the blocked passes over large matrices (256 kB: in cache between a block's
+#: operations).
+_BLOCK_ENTRIES = 1 << 15
+
+
+def _row_blocks(shape):
+    """Slices of consecutive rows of about ``_BLOCK_ENTRIES`` entries covering a matrix of ``shape``."""
+    step = max(1, _BLOCK_ENTRIES // max(shape[1], 1))
+    return [slice(start, min(start + step, shape[0])) for start in range(0, shape[0], step)]
+
+
 def scalings(matrix):
-    """(row, col): the row then column scale factors to unit max-norm that ``equilibrate`` applies."""
-    row = 1.0 / _max_abs(matrix, 1)
-    col = 1.0 / _max_abs(matrix * row[:, None], 0)
-    return row, col
+    """(row, col): the row then column scale factors to unit max-norm that ``equilibrate`` applies.
+
+    Large matrices are scanned by blocks of rows, without the row-scaled temporary: the same numbers
+    (maxima are exact).
+    """
+    if matrix.size < _LARGE:
+        row = 1.0 / _max_abs(matrix, 1)
+        col = 1.0 / _max_abs(matrix * row[:, None], 0)
+        return row, col
+    row = np.empty(matrix.shape[0])
+    col_max = np.full(matrix.shape[1], -np.inf)
+    col_min = np.full(matrix.shape[1], np.inf)
+    for rows in _row_blocks(matrix.shape):
+        block = matrix[rows]
+        row[rows] = 1.0 / _max_abs(block, 1)
+        block = block * row[rows, None]
+        np.maximum(col_max, np.max(block, axis=0), out=col_max)
+        np.minimum(col_min, np.min(block, axis=0), out=col_min)
+    return row, 1.0 / np.maximum(col_max, -col_min)
 
 
 def _scaled(matrix):
@@ -31,10 +60,6 @@ def _scaled(matrix):
     col = 1.0 / _max_abs(scaled, 0)
     scaled *= col[None, :]
     return scaled, row, col
-
-
-#: Matrices of at least this many entries are summed without a temporary (8 MB).
-_LARGE = 1 << 20
 
 
 def _column_abs_sums(matrix):
@@ -47,6 +72,41 @@ def _column_abs_sums(matrix):
     for row in matrix[1:]:
         sums += np.abs(row, out=buffer)
     return sums
+
+
+def scaled_column_abs_sums(matrix, row, col):
+    """sum_i |(a_ij row_i) col_j|: ``np.sum(np.abs(matrix * row[:, None] * col[None, :]), axis=0)`` (the column
+    sums of the scaled matrix, whose maximum is its 1-norm), without the scaled temporary for large matrices."""
+    if matrix.size < _LARGE or matrix.shape[1] < 64:
+        return np.sum(np.abs(matrix * row[:, None] * col[None, :]), axis=0)
+    sums = np.zeros(matrix.shape[1])  # 0 + s = s exactly: the sums of numpy, which starts from the first row
+    for rows in _row_blocks(matrix.shape):
+        block = matrix[rows] * row[rows, None]
+        block *= col[None, :]
+        for scaled in np.abs(block, out=block):  # row after row, numpy's order (``_column_abs_sums``)
+            sums += scaled
+    return sums
+
+
+def equilibrated_fortran(matrix):
+    """(scaled, row, col, column_sums): ``equilibrate(matrix)`` in Fortran order (the layout LAPACK factors,
+    so ``lu_factor(scaled, overwrite_a=True)`` factors it in place), the scalings and the column sums of its
+    absolute values (``scaled_column_abs_sums``).  The same numbers; besides ``scaled``, no array of the
+    matrix's size for large matrices.  A nan or an inf among the scaled entries makes its column's sum
+    non-finite (the finite ones are at most 1 in magnitude)."""
+    row, col = scalings(matrix)
+    if matrix.size < _LARGE or matrix.shape[1] < 64:
+        scaled = matrix * row[:, None] * col[None, :]
+        return np.asfortranarray(scaled), row, col, np.sum(np.abs(scaled), axis=0)
+    scaled = np.empty(matrix.shape, order="F")
+    sums = np.zeros(matrix.shape[1])
+    for rows in _row_blocks(matrix.shape):
+        block = matrix[rows] * row[rows, None]
+        block *= col[None, :]
+        scaled[rows] = block
+        for entries in np.abs(block, out=block):
+            sums += entries
+    return scaled, row, col, sums
 
 
 def equilibrate(matrix):

@@ -215,7 +215,10 @@ def assemble(method: str, lam: np.ndarray, b: float):
     ``matrix @ x = T* rhs_torque + rhs_constant`` with x = (c_1..c_N[, omega]).
     """
     lam = np.asarray(lam, dtype=float)
-    matrix = integrals.lommel_matrix(lam, b)
+    n = lam.size
+    # the complete system borders the published one: its leading block is written in place
+    full = np.empty((n, n) if method == "published" else (n + 1, n + 1))
+    matrix = integrals.lommel_matrix(lam, b, out=full if method == "published" else full[:n, :n])
     matrix *= (lam - 1.0)[None, :]
     matrix[np.diag_indices_from(matrix)] += integrals.dini_norm(lam)
     rhs_torque = integrals.load_integral_linear(lam, b)
@@ -223,9 +226,6 @@ def assemble(method: str, lam: np.ndarray, b: float):
     if method == "published":
         return matrix, rhs_torque, rhs_constant
     stick = integrals.stick_moment(lam, b)
-    n = lam.size
-    full = np.empty((n + 1, n + 1))
-    full[:n, :n] = matrix
     full[:n, n] = stick
     full[n, :n] = (1.0 - lam) * stick
     full[n, n] = b**4 / 4.0
