@@ -163,7 +163,8 @@ def lommel_matrix(lam, b, out=None):
     h(lam) - (b^2/2) [J0(lam b)^2 + J1(lam b)^2 - 2 J0(lam b) J1(lam b) / (lam b)].
 
     ``out``: an (N, N) float array (a view is fine) to write the matrix to, e.g. the leading block of
-    a bordered system.
+    a bordered system; one whose columns are contiguous (Fortran order) is written column block by column
+    block.  The entries do not depend on the layout.
 
     Returns
     -------
@@ -179,19 +180,30 @@ def lommel_matrix(lam, b, out=None):
     j0b, j1b = special.j0(x), special.j1(x)
     lam_j0b, lam_sq = lam * j0b, lam**2
     # -b [lam_n J1(lam_m b) J0(lam_n b) - lam_m J0(lam_m b) J1(lam_n b)] / (lam_m^2 - lam_n^2), block of rows by
-    # block of rows (the same operations, in the same order, as the plain expression)
+    # block of rows (the same operations, in the same order, as the plain expression); in Fortran order the
+    # blocks are of rows of the transpose: index k runs over n, the other over m
+    by_columns = out.ndim == 2 and n > 1 and abs(out.strides[0]) < abs(out.strides[1])
+    target = out.T if by_columns else out
     step = max(1, _BLOCK_ENTRIES // max(n, 1))
     work = np.empty((min(step, n), n))
     for start in range(0, n, step):
-        rows = slice(start, min(start + step, n))
-        block, w = out[rows], work[: rows.stop - start]
-        np.multiply(lam[None, :], j1b[rows, None], out=block)
-        block *= j0b[None, :]
-        np.multiply(lam_j0b[rows, None], j1b[None, :], out=w)
+        k = slice(start, min(start + step, n))
+        block, w = target[k], work[: k.stop - start]
+        if by_columns:  # block[n, m] = I_mn
+            np.multiply(lam[k, None], j1b[None, :], out=block)
+            block *= j0b[k, None]
+            np.multiply(lam_j0b[None, :], j1b[k, None], out=w)
+        else:  # block[m, n] = I_mn
+            np.multiply(lam[None, :], j1b[k, None], out=block)
+            block *= j0b[None, :]
+            np.multiply(lam_j0b[k, None], j1b[None, :], out=w)
         block -= w
         block *= -b
-        np.subtract(lam_sq[rows, None], lam_sq[None, :], out=w)
-        local = np.arange(rows.stop - start)
+        if by_columns:
+            np.subtract(lam_sq[None, :], lam_sq[k, None], out=w)
+        else:
+            np.subtract(lam_sq[k, None], lam_sq[None, :], out=w)
+        local = np.arange(k.stop - start)
         w[local, start + local] = 1.0
         block /= w
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -14,8 +14,8 @@ from scipy import linalg
 
 from .. import validation
 from ..diagnostics import AccuracyWarning, IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
-from ..solvers.equilibration import _column_abs_sums, equilibrated_fortran, scaled_column_abs_sums, scalings
-from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, resolution_limit, solve_series
+from ..solvers.equilibration import _column_abs_sums, equilibrate_in_place, scaled_column_abs_sums, scalings
+from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, complete_border, resolution_limit, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
@@ -192,7 +192,7 @@ def _rcond_estimate(lu, anorm, border=None, scale=None) -> float:
     """dgecon's 1 / (||A||_1 ||A^-1||_1) for the matrix whose factors ``_factor_solves`` applies (0 for a zero
     pivot, as dgecon)."""
     pivots = np.append(np.diagonal(lu), [] if border is None else [border[2]])
-    if not np.all(pivots != 0.0):
+    if anorm == 0.0 or not np.all(pivots != 0.0):
         return 0.0
     solve, solve_t = _factor_solves(lu, border, scale)
     with np.errstate(over="ignore", invalid="ignore"):
@@ -201,14 +201,6 @@ def _rcond_estimate(lu, anorm, border=None, scale=None) -> float:
     if math.isnan(rcond):
         raise RuntimeError("the condition estimate is not a number")
     return rcond
-
-
-def _dgecon(factors, anorm) -> float:
-    """LAPACK's estimate (dgecon) of 1 / (||A||_1 ||A^-1||_1) from LU factors (getrf layout) and ||A||_1."""
-    rcond, info = linalg.lapack.dgecon(factors, anorm, norm="1")
-    if info != 0:
-        raise RuntimeError(f"dgecon failed (info={info})")
-    return float(rcond)
 
 
 def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORMS, progress: bool = False) -> list:
@@ -315,24 +307,26 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
 def _weak_forms(b: float, lam: np.ndarray) -> dict:
     """The numbers of ``weak_forms_at`` (checked there)."""
     n = lam.size
-    complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
-    published = complete[:n, :n]
-    # equilibrate(published) in the layout LAPACK factors (factored in place below) and its column sums
-    scaled, row, col, column_sums = equilibrated_fortran(published)
+    # the published matrix in the layout LAPACK factors, equilibrated and factored in place; the complete system
+    # borders it
+    scaled, rhs_published, constant_published = assemble_double("published", lam, b, order="F")
+    column, border_row, corner, torque_last, constant_last = complete_border(lam, b)
+    rhs_torque, rhs_constant = np.append(rhs_published, torque_last), np.append(constant_published, constant_last)
+    row, col, column_sums = equilibrate_in_place(scaled)
     if not np.all(np.isfinite(column_sums)):  # the scaling overflows: nothing below is a number
         return {method: (math.inf, math.nan) for method in WEAK_FORMS} | {"rounding_bound": math.nan}
     lu, pivots = linalg.lu_factor(scaled, overwrite_a=True, check_finite=False)
     del scaled
-    rcond = _dgecon(lu, np.max(column_sums))
+    rcond = _rcond_estimate(lu, np.max(column_sums))  # dgecon's estimate, by triangular solves
     if rcond < RCOND_WARN:
         warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
                       f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=3)
     rhs = np.column_stack([rhs_torque[:n], rhs_constant[:n]])
     x = linalg.lu_solve((lu, pivots), rhs * row[:, None]) * col[:, None]  # as equilibrated_solve
-    border = linalg.lu_solve((lu, pivots), complete[:n, n] * row) * col
+    border = linalg.lu_solve((lu, pivots), column * row) * col
     out = {"published": (closure_torque("traction", "published", lam, b, x[:, 0], x[:, 1]), math.nan),
            "rounding_bound": EPS / rcond}
-    t, d = complete[n, :n], complete[n, n]
+    t, d = border_row, corner
     schur = d - t @ border
     if abs(schur) < 1e3 * EPS * (abs(d) + np.abs(t) @ np.abs(border)):
         warnings.warn(f"block elimination of the complete system at stick_radius={b:.6g}, n_terms={n}: the Schur "
