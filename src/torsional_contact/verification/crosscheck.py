@@ -309,9 +309,8 @@ def _weak_forms(b: float, lam: np.ndarray) -> dict:
     n = lam.size
     # the published matrix in the layout LAPACK factors, equilibrated and factored in place; the complete system
     # borders it
-    scaled, rhs_published, constant_published = assemble_double("published", lam, b, order="F")
-    column, border_row, corner, torque_last, constant_last = complete_border(lam, b)
-    rhs_torque, rhs_constant = np.append(rhs_published, torque_last), np.append(constant_published, constant_last)
+    scaled, rhs_torque, rhs_constant = assemble_double("published", lam, b, order="F")
+    column, t, d, torque_last, constant_last = complete_border(lam, b)
     row, col, column_sums = equilibrate_in_place(scaled)
     if not np.all(np.isfinite(column_sums)):  # the scaling overflows: nothing below is a number
         return {method: (math.inf, math.nan) for method in WEAK_FORMS} | {"rounding_bound": math.nan}
@@ -321,17 +320,16 @@ def _weak_forms(b: float, lam: np.ndarray) -> dict:
     if rcond < RCOND_WARN:
         warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
                       f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=3)
-    rhs = np.column_stack([rhs_torque[:n], rhs_constant[:n]])
+    rhs = np.column_stack([rhs_torque, rhs_constant])
     x = linalg.lu_solve((lu, pivots), rhs * row[:, None]) * col[:, None]  # as equilibrated_solve
     border = linalg.lu_solve((lu, pivots), column * row) * col
     out = {"published": (closure_torque("traction", "published", lam, b, x[:, 0], x[:, 1]), math.nan),
            "rounding_bound": EPS / rcond}
-    t, d = border_row, corner
     schur = d - t @ border
     if abs(schur) < 1e3 * EPS * (abs(d) + np.abs(t) @ np.abs(border)):
         warnings.warn(f"block elimination of the complete system at stick_radius={b:.6g}, n_terms={n}: the Schur "
                       f"complement {schur:.3g} is at rounding level", AccuracyWarning, stacklevel=3)
-    omega = (np.array([rhs_torque[n], rhs_constant[n]]) - t @ x) / schur
+    omega = (np.array([torque_last, constant_last]) - t @ x) / schur
     coefficients = x - border[:, None] * omega[None, :]
     solution = np.vstack([coefficients, omega[None, :]])
     torque = closure_torque("traction", "complete", lam, b, solution[:, 0], solution[:, 1])
