@@ -112,10 +112,9 @@ def _badly_scaled(shape, order="C"):
 
 @pytest.mark.parametrize("shape", [(1, 1), (300, 257), (257, 300), (40, 1000), (1161, 1161)])
 @pytest.mark.parametrize("order", ["C", "F"])
-def test_blocked_scalings_and_sums_are_the_plain_ones(shape, order, monkeypatch):
+def test_blocked_scalings_are_the_plain_ones(shape, order, monkeypatch):
     """Blocks of rows (of columns in Fortran order) at every size, several blocks and a short last one: the
-    plain expressions bit for bit (maxima are exact; the column sums of the C-ordered matrix added row after row,
-    numpy's order)."""
+    plain expressions bit for bit (maxima are exact)."""
     monkeypatch.setattr(equilibration, "_LARGE", 0)
     monkeypatch.setattr(equilibration, "_BLOCK_ENTRIES", 3000)
     matrix = _badly_scaled(shape, order)
@@ -123,9 +122,6 @@ def test_blocked_scalings_and_sums_are_the_plain_ones(shape, order, monkeypatch)
     col = 1.0 / np.max(np.abs(matrix * row[:, None]), axis=0)
     row_b, col_b = equilibration.scalings(matrix)
     assert np.array_equal(row_b, row) and np.array_equal(col_b, col)
-    if order == "C" and shape[1] >= 64:  # narrower matrices are summed as numpy sums them
-        sums = equilibration.scaled_column_abs_sums(matrix, row, col)
-        assert np.array_equal(sums, np.sum(np.abs(matrix * row[:, None] * col[None, :]), axis=0))
 
 
 @pytest.mark.parametrize("shape", [(1, 1), (300, 257), (40, 1000), (1161, 1161)])

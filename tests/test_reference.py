@@ -298,6 +298,34 @@ def test_rcond_estimate_is_dgecon_step_for_step():
     assert short >= 10  # the set exercises iterations that stop before the largest column
 
 
+@pytest.mark.parametrize("n", [1, 7, 300])
+@pytest.mark.parametrize("kind", ["assembled", "random"])
+def test_bordered_norms_against_the_plain_expressions(n, kind):
+    """The scalings of A and of the bordered matrix bit for bit as ``scalings`` gives them on the formed matrices;
+    their raw and equilibrated 1-norms within N EPS of the exact column sums (math.fsum of the formed matrices'
+    entries), the bound of any order of summation of N + 1 non-negative terms."""
+    from torsional_contact.solvers.equilibration import equilibrate, scalings
+
+    if kind == "assembled":
+        lam = bessel_j2_zeros(n)
+        published, _, _ = formulations.assemble("published", lam, 0.6, order="F")
+        column, row, corner, _, _ = formulations.complete_border(lam, 0.6)
+    else:
+        rng = np.random.default_rng(n)
+        published = np.asfortranarray(rng.standard_normal((n, n)) * np.exp(rng.uniform(-20, 20, n))[:, None])
+        column, row = rng.standard_normal(n) * np.exp(rng.uniform(-20, 20, n)), rng.standard_normal(n)
+        corner = float(rng.standard_normal())
+    complete = np.block([[published, column[:, None]], [row[None, :], np.array([[corner]])]])
+    norms = crosscheck._bordered_norms(published, column, row, corner)
+    for method, matrix in (("published", np.ascontiguousarray(published)), ("complete", complete)):
+        anorm, row_scale, col_scale, anorm_equilibrated = norms[method]
+        plain_row, plain_col = scalings(matrix)
+        assert np.array_equal(row_scale, plain_row) and np.array_equal(col_scale, plain_col)
+        for value, formed in ((anorm, matrix), (anorm_equilibrated, equilibrate(matrix))):
+            exact = max(math.fsum(np.abs(formed[:, j])) for j in range(formed.shape[1]))
+            assert_within(abs(value - exact), formed.shape[0] * EPS * exact, "any summation order: N EPS")
+
+
 def test_rcond_estimate_degenerate_cases():
     """n = 1 (the estimate is |1/a|, exact), a zero pivot and a zero matrix (0, as dgecon)."""
     from scipy import linalg

@@ -9,8 +9,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import linalg
 
-__all__ = ["equilibrate", "equilibrate_in_place", "equilibrated_solve", "reciprocal_condition", "scalings",
-           "scaled_column_abs_sums"]
+__all__ = ["equilibrate", "equilibrate_in_place", "equilibrated_solve", "reciprocal_condition", "scalings"]
 
 
 def _max_abs(matrix, axis):
@@ -92,29 +91,15 @@ def _column_abs_sums(matrix):
     return sums
 
 
-def scaled_column_abs_sums(matrix, row, col):
-    """sum_i |(a_ij row_i) col_j|: ``np.sum(np.abs(matrix * row[:, None] * col[None, :]), axis=0)`` (the column
-    sums of the scaled matrix, whose maximum is its 1-norm), without the scaled temporary for large matrices."""
-    if matrix.size < _LARGE or matrix.shape[1] < 64:
-        return np.sum(np.abs(matrix * row[:, None] * col[None, :]), axis=0)
-    sums = np.zeros(matrix.shape[1])  # 0 + s = s exactly: the sums of numpy, which starts from the first row
-    for rows in _row_blocks(matrix.shape):
-        block = matrix[rows] * row[rows, None]
-        block *= col[None, :]
-        for scaled in np.abs(block, out=block):  # row after row, numpy's order (``_column_abs_sums``)
-            sums += scaled
-    return sums
-
-
 def equilibrate_in_place(matrix):
     """Overwrite ``matrix`` with ``equilibrate(matrix)`` (the same numbers); returns (row, col, column_sums): the
     scalings and the column sums of the scaled entries' absolute values (their maximum is the 1-norm).
 
     A large matrix in Fortran order (the layout LAPACK factors in place) is scaled by blocks of columns, without
     a temporary of its size, and its columns are summed pairwise (numpy's sum along a contiguous axis): the
-    sums of ``scaled_column_abs_sums`` to (N + log2 N) EPS relative (each order of summation is within
-    (N - 1) EPS of the exact sum of the N non-negative terms).  A nan or an inf among the scaled entries makes
-    its column's sum non-finite (the finite ones are at most 1 in magnitude).
+    sums of ``np.sum(np.abs(equilibrate(matrix)), axis=0)`` to (N + log2 N) EPS relative (each order of
+    summation is within (N - 1) EPS of the exact sum of the N non-negative terms).  A nan or an inf among the
+    scaled entries makes its column's sum non-finite (the finite ones are at most 1 in magnitude).
     """
     row, col = scalings(matrix)
     if matrix.size < _LARGE or not _by_columns(matrix):

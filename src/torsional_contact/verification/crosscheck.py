@@ -14,7 +14,7 @@ from scipy import linalg
 
 from .. import validation
 from ..diagnostics import AccuracyWarning, IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
-from ..solvers.equilibration import _column_abs_sums, equilibrate_in_place, scaled_column_abs_sums, scalings
+from ..solvers.equilibration import _row_blocks, equilibrate_in_place
 from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, complete_border, resolution_limit, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
@@ -203,6 +203,49 @@ def _rcond_estimate(lu, anorm, border=None, scale=None) -> float:
     return rcond
 
 
+def _bordered_norms(matrix, column, row, corner) -> dict:
+    """The 1-norms and scalings of A (``matrix``, Fortran order) and of [[A, column], [row, corner]], raw and
+    equilibrated, without forming the bordered matrix or any other of A's size: method -> (||M||_1, row scaling,
+    column scaling, ||R M C||_1).
+
+    The scalings are ``scalings``' of each matrix bit for bit (maxima are exact); the column sums of |M| and
+    |R M C| are summed pairwise down A's contiguous columns, the border's entry last: the sums of the plain
+    expressions to (N + log2 N) EPS relative (any order of summation of N + 1 non-negative terms is within
+    N EPS of the exact sum).
+    """
+    n = matrix.shape[0]
+    blocks = _row_blocks(matrix.T.shape)  # blocks of columns
+    abs_row, abs_column = np.abs(row), np.abs(column)
+    row_max = np.zeros(n)
+    sums = np.empty(n)
+    for cols in blocks:
+        block = np.abs(matrix[:, cols])
+        np.maximum(row_max, np.max(block, axis=1), out=row_max)
+        sums[cols] = np.sum(block, axis=0)
+    if not np.all(np.isfinite(sums)) and not np.all(np.isfinite(matrix)):
+        raise ValueError("array must not contain infs or NaNs")
+    row_p = 1.0 / row_max
+    row_c = np.append(1.0 / np.maximum(row_max, abs_column), 1.0 / max(np.max(abs_row), abs(corner)))
+    col_p, col_c = np.empty(n), np.empty(n + 1)
+    last_c = abs_row * row_c[n]  # the border row, row-scaled
+    for cols in blocks:
+        block = matrix[:, cols]
+        col_p[cols] = 1.0 / np.max(np.abs(block * row_p[:, None]), axis=0)
+        col_c[cols] = 1.0 / np.maximum(np.max(np.abs(block * row_c[:n, None]), axis=0), last_c[cols])
+    border_c = np.abs(column * row_c[:n])
+    col_c[n] = 1.0 / max(np.max(border_c), abs(corner * row_c[n]))
+    sums_p, sums_c = np.empty(n), np.empty(n + 1)
+    for cols in blocks:
+        block = matrix[:, cols]
+        sums_p[cols] = np.sum(np.abs((block * row_p[:, None]) * col_p[None, cols]), axis=0)
+        sums_c[cols] = np.sum(np.abs((block * row_c[:n, None]) * col_c[None, cols]), axis=0)
+    sums_c[:n] += np.abs((row * row_c[n]) * col_c[:n])
+    sums_c[n] = np.sum(np.abs((column * row_c[:n]) * col_c[n])) + abs((corner * row_c[n]) * col_c[n])
+    raw_c = max(np.max(sums + abs_row), np.sum(abs_column) + abs(corner))
+    return {"published": (np.max(sums), row_p, col_p, np.max(sums_p)),
+            "complete": (raw_c, row_c, col_c, np.max(sums_c))}
+
+
 def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORMS, progress: bool = False) -> list:
     """1-norm condition numbers of the double-precision system vs N (raw and equilibrated).
 
@@ -212,7 +255,9 @@ def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORM
     (``_border``) and the equilibrated ones have the same factors scaled by the row and column scalings
     (``_factor_solves``); the estimator's products with the inverse and its transpose are triangular solves
     with A's factors and O(N) corrections, so each estimate is of the same operator inverse as from its own
-    factorisation, to rounding (relative kappa EPS < 1e-10 here, far below the estimator's own factor).
+    factorisation, to rounding (relative kappa EPS < 1e-10 here, far below the estimator's own factor).  A is
+    assembled in LAPACK's layout and factored in place after ``_bordered_norms`` has taken the four 1-norms
+    and scalings from it and the border (no other array of its size).
 
     Returns
     -------
@@ -229,20 +274,22 @@ def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORM
         sizes = tqdm(sizes, desc="condition numbers")
     for n in sizes:
         lam = bessel_j2_zeros(n)
-        complete, _, _ = assemble_double("complete", lam, stick_radius)
-        published = complete[:n, :n]  # the complete system borders the published one
-        lu, pivots = linalg.lu_factor(published, check_finite=True)
+        # the published matrix in the layout LAPACK factors (in place, after its norms are taken); the complete
+        # system borders it
+        published, _, _ = assemble_double("published", lam, stick_radius, order="F")
+        column, row, corner, _, _ = complete_border(lam, stick_radius)
+        norms = _bordered_norms(published, column, row, corner)
+        lu, pivots = linalg.lu_factor(published, overwrite_a=True, check_finite=False)
+        del published
         order = _row_order(pivots)
-        systems = {"published": (published, order, None)}
+        systems = {"published": (order, None)}
         if "complete" in methods:
-            border = _border(lu, order, complete[:n, n], complete[n, :n], complete[n, n])
-            systems["complete"] = (complete, np.append(order, n), border)
+            systems["complete"] = (np.append(order, n), _border(lu, order, column, row, corner))
         for m in methods:
-            matrix, order_m, border_m = systems[m]
-            row, col = scalings(matrix)
-            raw = _rcond_estimate(lu, np.max(_column_abs_sums(matrix)), border_m)
-            equilibrated = _rcond_estimate(lu, np.max(scaled_column_abs_sums(matrix, row, col)), border_m,
-                                           (row[order_m], col))
+            order_m, border_m = systems[m]
+            anorm, row_scale, col_scale, anorm_equilibrated = norms[m]
+            raw = _rcond_estimate(lu, anorm, border_m)
+            equilibrated = _rcond_estimate(lu, anorm_equilibrated, border_m, (row_scale[order_m], col_scale))
             out.append({"n_terms": n, "method": m, "stick_radius": stick_radius, "raw": 1.0 / raw,
                         "equilibrated": 1.0 / equilibrated})
     return out
