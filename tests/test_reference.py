@@ -230,6 +230,133 @@ def test_condition_numbers_shared_factorisation_against_own_factorisations():
             assert exact / 3 <= row[key] <= exact * (1 + 1e3 * exact * EPS)
 
 
+def _random_system(seed):
+    """A random square matrix of one of four kinds (dense, triangular-heavy, badly row-scaled, unit lower plus
+    noise) and a random border; dgecon's estimate falls short of the exact ||A^-1||_1 on some of them."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(2, 60))
+    kind = seed % 4
+    if kind == 0:
+        a = rng.standard_normal((n, n))
+    elif kind == 1:
+        a = np.triu(rng.standard_normal((n, n))) + 0.1 * np.eye(n)
+    elif kind == 2:
+        a = rng.standard_normal((n, n)) * np.exp(rng.uniform(-5, 5, n))[:, None]
+    else:
+        a = np.eye(n) + 2.0 * np.tril(rng.uniform(-1, 1, (n, n)), -1)
+    return a, rng.standard_normal(n), rng.standard_normal(n), float(rng.standard_normal())
+
+
+def _one_norm(matrix):
+    return np.max(np.sum(np.abs(matrix), axis=0))
+
+
+def test_rcond_estimate_is_dgecon_step_for_step():
+    """dlacn2's iteration driven by triangular solves against LAPACK's dgecon on explicitly formed factors: of A,
+    of R A C (factors R_p L R_p^-1, R_p U C), of A bordered by a row and a column, and of both; on random matrices,
+    some of them where the estimate stops short of the exact ||A^-1||_1 (so the iterations' paths are compared,
+    not only their limit).  The two differ by the rounding of their solves (1e3 kappa EPS, as the estimates
+    through other factors in test_condition_numbers_shared_factorisation_against_own_factorisations, times the
+    factors' growth) and are lower bounds of the exact norm (dense inverse) to the same rounding."""
+    from scipy import linalg
+
+    short = 0
+    for seed in range(200):
+        a, column, border_row, corner = _random_system(seed)
+        n = a.shape[0]
+        lu, pivots = linalg.lu_factor(a)
+        order = crosscheck._row_order(pivots)
+        lower, upper = np.tril(lu, -1) + np.eye(n), np.triu(lu)
+        # bordered factors, by dense solves: L u = P c, l U = r, pivot d - l.u
+        u = np.linalg.solve(lower, column[order])
+        l_row = np.linalg.solve(upper.T, border_row)
+        pivot = corner - l_row @ u
+        bordered_lu = np.block([[lu, u[:, None]], [l_row[None, :], np.array([[pivot]])]])
+        bordered = np.block([[a, column[:, None]], [border_row[None, :], np.array([[corner]])]])
+        rng = np.random.default_rng(seed + 1000)
+        row, col = np.exp(rng.uniform(-3, 3, n + 1)), np.exp(rng.uniform(-3, 3, n + 1))
+        for matrix, factors, border, order_m in ((a, lu, None, order), (bordered, bordered_lu, (u, l_row, pivot),
+                                                                          np.append(order, n))):
+            m = matrix.shape[0]
+            r_p, c = row[:m][order_m], col[:m]
+            scaled_factors = np.tril(factors, -1) * (r_p[:, None] / r_p[None, :]) + np.triu(factors) * (
+                r_p[:, None] * c[None, :])
+            scaled = matrix * row[:m, None] * c[None, :]
+            for target, target_factors, scale in ((matrix, factors, None), (scaled, scaled_factors, (r_p, c))):
+                anorm = _one_norm(target)
+                expected = linalg.lapack.dgecon(target_factors, anorm, norm="1")[0]
+                estimate = crosscheck._rcond_estimate(lu, anorm, border, scale)
+                exact = 1.0 / (anorm * _one_norm(np.linalg.inv(target)))
+                # the solves are backward stable with |dA| <= gamma_n |L||U|: their relative forward error is
+                # kappa EPS times the growth || |L||U| ||_1 / ||A||_1 (large where a border's pivot is small)
+                growth = _one_norm(np.abs(np.tril(target_factors, -1) + np.eye(m)) @ np.abs(np.triu(target_factors)))
+                kappa_eps = EPS / exact * growth / anorm
+                assert_close(estimate, expected, "dgecon's iteration through other solves: 1e3 kappa growth EPS",
+                             rtol=1e3 * kappa_eps)
+                assert estimate >= exact * (1 - 1e3 * kappa_eps)
+                short += expected > exact * (1 + 1e3 * kappa_eps)
+    assert short >= 10  # the set exercises iterations that stop before the largest column
+
+
+@pytest.mark.parametrize("n", [1, 7, 300])
+@pytest.mark.parametrize("kind", ["assembled", "random"])
+def test_bordered_norms_against_the_plain_expressions(n, kind):
+    """The scalings of A and of the bordered matrix bit for bit as ``scalings`` gives them on the formed matrices;
+    their raw and equilibrated 1-norms within N EPS of the exact column sums (math.fsum of the formed matrices'
+    entries), the bound of any order of summation of N + 1 non-negative terms."""
+    from torsional_contact.solvers.equilibration import equilibrate, scalings
+
+    if kind == "assembled":
+        lam = bessel_j2_zeros(n)
+        published, _, _ = formulations.assemble("published", lam, 0.6, order="F")
+        column, row, corner, _, _ = formulations.complete_border(lam, 0.6)
+    else:
+        rng = np.random.default_rng(n)
+        published = np.asfortranarray(rng.standard_normal((n, n)) * np.exp(rng.uniform(-20, 20, n))[:, None])
+        column, row = rng.standard_normal(n) * np.exp(rng.uniform(-20, 20, n)), rng.standard_normal(n)
+        corner = float(rng.standard_normal())
+    complete = np.block([[published, column[:, None]], [row[None, :], np.array([[corner]])]])
+    norms = crosscheck._bordered_norms(published, column, row, corner)
+    for method, matrix in (("published", np.ascontiguousarray(published)), ("complete", complete)):
+        anorm, row_scale, col_scale, anorm_equilibrated = norms[method]
+        plain_row, plain_col = scalings(matrix)
+        assert np.array_equal(row_scale, plain_row) and np.array_equal(col_scale, plain_col)
+        for value, formed in ((anorm, matrix), (anorm_equilibrated, equilibrate(matrix))):
+            exact = max(math.fsum(np.abs(formed[:, j])) for j in range(formed.shape[1]))
+            assert_within(abs(value - exact), formed.shape[0] * EPS * exact, "any summation order: N EPS")
+
+
+def test_rcond_estimate_degenerate_cases():
+    """n = 1 (the estimate is |1/a|, exact), a zero pivot and a zero matrix (0, as dgecon)."""
+    from scipy import linalg
+
+    lu = np.array([[-4.0]])
+    assert crosscheck._rcond_estimate(lu, 4.0) == linalg.lapack.dgecon(lu, 4.0, norm="1")[0] == 1.0
+    singular = np.array([[1.0, 2.0], [0.0, 0.0]])
+    assert crosscheck._rcond_estimate(singular, 3.0) == 0.0
+    assert crosscheck._rcond_estimate(np.zeros((3, 3)), 0.0) == 0.0
+
+
+@pytest.mark.parametrize("b", [0.1, 0.6, 0.9])
+def test_weak_forms_at_published_is_solve_series_bit_for_bit(b, monkeypatch):
+    """The published system assembled in Fortran order and equilibrated in place, by blocks (at every size):
+    solve_series' T* bit for bit, and its rounding bound EPS / rcond that of solve_series' dgecon, to the
+    rounding of the estimate's solves (1e3 kappa EPS) and of the 1-norm's summation ((N + log2 N) EPS)."""
+    from torsional_contact.solvers import equilibration
+
+    monkeypatch.setattr(equilibration, "_LARGE", 0)
+    monkeypatch.setattr(equilibration, "_BLOCK_ENTRIES", 5000)
+    n = 300
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", formulations.UnphysicalResultWarning)
+        out = crosscheck.weak_forms_at(b, n)
+        own = formulations.solve_series(b, "published", n)
+    assert out["published"][0] == own.torque
+    kappa_eps = EPS / own.rcond
+    assert_close(out["rounding_bound"], kappa_eps, "the same estimate: 1e3 kappa EPS + (N + 9) EPS",
+                 rtol=1e3 * kappa_eps + (n + 9) * EPS)
+
+
 @pytest.mark.parametrize("b", [0.3, 0.9])
 def test_truncation_errors_one_factorisation(b):
     """Both weak forms at the converged N from one LU: the published solve is solve_series' own; the complete one

@@ -74,7 +74,8 @@ def main():
                "truncated system (rounding), and against N = converged_n_terms (truncation; both forms at "
                "converged_n_terms from one LU of the equilibrated published matrix, the complete one by block "
                "elimination; converged_rounding_bound = EPS / rcond, the relative rounding of such a dense solve); "
-               "condition numbers: LAPACK dgecon from one LU per N (bordered and scaled for the other three)",
+               "condition numbers: LAPACK dgecon's estimate (its Hager-Higham iteration, dlacn2, through triangular "
+               "solves) from one LU per N (bordered and scaled for the other three)",
                precision="IEEE double vs the reference's digits", resolution={"n_terms": n_terms})
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import linalg
 
-__all__ = ["equilibrate", "equilibrated_solve", "reciprocal_condition", "scalings"]
+__all__ = ["equilibrate", "equilibrate_in_place", "equilibrated_solve", "reciprocal_condition", "scalings"]
 
 
 def _max_abs(matrix, axis):
@@ -17,11 +17,57 @@ def _max_abs(matrix, axis):
     return np.maximum(np.max(matrix, axis=axis), -np.min(matrix, axis=axis))
 
 
+#: Matrices of at least this many entries are summed without a temporary (8 MB).
+_LARGE = 1 << 20
+#: Entries per block of rows in the blocked passes over large matrices (256 kB: in cache between a block's
+#: operations).
+_BLOCK_ENTRIES = 1 << 15
+
+
+def _row_blocks(shape):
+    """Slices of consecutive rows of about ``_BLOCK_ENTRIES`` entries covering a matrix of ``shape``."""
+    step = max(1, _BLOCK_ENTRIES // max(shape[1], 1))
+    return [slice(start, min(start + step, shape[0])) for start in range(0, shape[0], step)]
+
+
+def _by_columns(matrix) -> bool:
+    """Whether a large matrix is scanned by blocks of columns (it is stored column after column)."""
+    return matrix.flags.f_contiguous and not matrix.flags.c_contiguous
+
+
 def scalings(matrix):
-    """(row, col): the row then column scale factors to unit max-norm that ``equilibrate`` applies."""
-    row = 1.0 / _max_abs(matrix, 1)
-    col = 1.0 / _max_abs(matrix * row[:, None], 0)
-    return row, col
+    """(row, col): the row then column scale factors to unit max-norm that ``equilibrate`` applies.
+
+    Large matrices are scanned by blocks of rows (of columns in Fortran order), without the row-scaled
+    temporary: the same numbers (maxima are exact).
+    """
+    if matrix.size < _LARGE:
+        row = 1.0 / _max_abs(matrix, 1)
+        col = 1.0 / _max_abs(matrix * row[:, None], 0)
+        return row, col
+    if _by_columns(matrix):
+        row_max = np.full(matrix.shape[0], -np.inf)
+        row_min = np.full(matrix.shape[0], np.inf)
+        blocks = _row_blocks(matrix.T.shape)
+        for cols in blocks:
+            block = matrix[:, cols]
+            np.maximum(row_max, np.max(block, axis=1), out=row_max)
+            np.minimum(row_min, np.min(block, axis=1), out=row_min)
+        row = 1.0 / np.maximum(row_max, -row_min)
+        col = np.empty(matrix.shape[1])
+        for cols in blocks:
+            col[cols] = 1.0 / _max_abs(matrix[:, cols] * row[:, None], 0)
+        return row, col
+    row = np.empty(matrix.shape[0])
+    col_max = np.full(matrix.shape[1], -np.inf)
+    col_min = np.full(matrix.shape[1], np.inf)
+    for rows in _row_blocks(matrix.shape):
+        block = matrix[rows]
+        row[rows] = 1.0 / _max_abs(block, 1)
+        block = block * row[rows, None]
+        np.maximum(col_max, np.max(block, axis=0), out=col_max)
+        np.minimum(col_min, np.min(block, axis=0), out=col_min)
+    return row, 1.0 / np.maximum(col_max, -col_min)
 
 
 def _scaled(matrix):
@@ -31,10 +77,6 @@ def _scaled(matrix):
     col = 1.0 / _max_abs(scaled, 0)
     scaled *= col[None, :]
     return scaled, row, col
-
-
-#: Matrices of at least this many entries are summed without a temporary (8 MB).
-_LARGE = 1 << 20
 
 
 def _column_abs_sums(matrix):
@@ -47,6 +89,30 @@ def _column_abs_sums(matrix):
     for row in matrix[1:]:
         sums += np.abs(row, out=buffer)
     return sums
+
+
+def equilibrate_in_place(matrix):
+    """Overwrite ``matrix`` with ``equilibrate(matrix)`` (the same numbers); returns (row, col, column_sums): the
+    scalings and the column sums of the scaled entries' absolute values (their maximum is the 1-norm).
+
+    A large matrix in Fortran order (the layout LAPACK factors in place) is scaled by blocks of columns, without
+    a temporary of its size, and its columns are summed pairwise (numpy's sum along a contiguous axis): the
+    sums of ``np.sum(np.abs(equilibrate(matrix)), axis=0)`` to (N + log2 N) EPS relative (each order of
+    summation is within (N - 1) EPS of the exact sum of the N non-negative terms).  A nan or an inf among the
+    scaled entries makes its column's sum non-finite (the finite ones are at most 1 in magnitude).
+    """
+    row, col = scalings(matrix)
+    if matrix.size < _LARGE or not _by_columns(matrix):
+        scaled = np.ascontiguousarray(matrix) * row[:, None] * col[None, :]
+        matrix[...] = scaled
+        return row, col, np.sum(np.abs(scaled), axis=0)
+    sums = np.empty(matrix.shape[1])
+    for cols in _row_blocks(matrix.T.shape):
+        block = matrix[:, cols]
+        block *= row[:, None]
+        block *= col[None, cols]
+        sums[cols] = np.sum(np.abs(block), axis=0)
+    return row, col, sums
 
 
 def equilibrate(matrix):

@@ -117,6 +117,7 @@ __all__ = [
     "SeriesSolution",
     "solve_series",
     "assemble",
+    "complete_border",
     "resolution_limit",
     "terms_to_resolve",
     "minimum_inverse_terms",
@@ -208,30 +209,35 @@ def minimum_inverse_terms() -> int:
     return terms_to_resolve(0.5)
 
 
-def assemble(method: str, lam: np.ndarray, b: float):
+def complete_border(lam: np.ndarray, b: float):
+    """The border of the complete system around the published one: (column, row, corner, rhs_torque, rhs_constant)
+    with the matrix [[A, column], [row, corner]] and the right-hand sides' last entries (equation (iv), unknown
+    omega)."""
+    lam = np.asarray(lam, dtype=float)
+    stick = integrals.stick_moment(lam, b)
+    return stick, (1.0 - lam) * stick, b**4 / 4.0, (1.0 - b**4) / 4.0, -(1.0 - b**3) / 3.0
+
+
+def assemble(method: str, lam: np.ndarray, b: float, order: str = "C"):
     """Matrix and the two right-hand sides (torque part, constant part) of (iii)-(iv).
 
     Returns ``(matrix, rhs_torque, rhs_constant)`` so that the system reads
-    ``matrix @ x = T* rhs_torque + rhs_constant`` with x = (c_1..c_N[, omega]).
+    ``matrix @ x = T* rhs_torque + rhs_constant`` with x = (c_1..c_N[, omega]).  ``order``: the matrix's
+    memory layout ("F": the one LAPACK factors without a copy); the entries do not depend on it.
     """
     lam = np.asarray(lam, dtype=float)
-    matrix = integrals.lommel_matrix(lam, b)
+    n = lam.size
+    # the complete system borders the published one: its leading block is written in place
+    full = np.empty((n, n) if method == "published" else (n + 1, n + 1), order=order)
+    matrix = integrals.lommel_matrix(lam, b, out=full if method == "published" else full[:n, :n])
     matrix *= (lam - 1.0)[None, :]
     matrix[np.diag_indices_from(matrix)] += integrals.dini_norm(lam)
     rhs_torque = integrals.load_integral_linear(lam, b)
     rhs_constant = -integrals.load_integral_constant(lam, b)
     if method == "published":
         return matrix, rhs_torque, rhs_constant
-    stick = integrals.stick_moment(lam, b)
-    n = lam.size
-    full = np.empty((n + 1, n + 1))
-    full[:n, :n] = matrix
-    full[:n, n] = stick
-    full[n, :n] = (1.0 - lam) * stick
-    full[n, n] = b**4 / 4.0
-    rhs_torque = np.append(rhs_torque, (1.0 - b**4) / 4.0)
-    rhs_constant = np.append(rhs_constant, -(1.0 - b**3) / 3.0)
-    return full, rhs_torque, rhs_constant
+    full[:n, n], full[n, :n], full[n, n], torque_last, constant_last = complete_border(lam, b)
+    return full, np.append(rhs_torque, torque_last), np.append(rhs_constant, constant_last)
 
 
 def _gross_slip(method: str, lam: np.ndarray) -> SeriesSolution:

@@ -150,36 +150,67 @@ def lommel_integral(lam_m, lam_n, lower, upper):
     return (primitive(upper) - primitive(lower)) / (lam_m**2 - lam_n**2)
 
 
-def lommel_matrix(lam, b):
+#: Entries per block of rows in ``lommel_matrix`` (256 kB: a block's operations run in cache, and no
+#: temporary has the matrix's size).
+_BLOCK_ENTRIES = 1 << 15
+
+
+def lommel_matrix(lam, b, out=None):
     """I_mn = int_b^1 J1(lam_m r) J1(lam_n r) r dr for zeros lam of J2 (eq. 52, 53).
 
     Off the diagonal only the r = b terms of (52) are kept (the r = 1 terms cancel
     exactly at zeros of J2).  The diagonal is eq. (53) without its prefactor:
     h(lam) - (b^2/2) [J0(lam b)^2 + J1(lam b)^2 - 2 J0(lam b) J1(lam b) / (lam b)].
 
+    ``out``: an (N, N) float array (a view is fine) to write the matrix to, e.g. the leading block of
+    a bordered system; one whose columns are contiguous (Fortran order) is written column block by column
+    block.  The entries do not depend on the layout.
+
     Returns
     -------
-    ndarray of shape (len(lam), len(lam)), symmetric.
+    ndarray of shape (len(lam), len(lam)), symmetric (``out`` if given).
     """
     lam = np.asarray(lam, dtype=float)
+    n = lam.size
+    if out is None:
+        out = np.empty((n, n))
+    elif out.shape != (n, n) or out.dtype != float:
+        raise ValueError(f"out must be a float array of shape {(n, n)}, got {out.dtype} {out.shape}")
     x = lam * b
     j0b, j1b = special.j0(x), special.j1(x)
-    # -b [lam_n J1(lam_m b) J0(lam_n b) - lam_m J0(lam_m b) J1(lam_n b)] / (lam_m^2 - lam_n^2), formed in two
-    # arrays of the matrix's size (the same operations, in the same order, as the plain expression)
-    matrix = lam[None, :] * j1b[:, None]
-    matrix *= j0b[None, :]
-    work = np.multiply((lam[:, None] * j0b[:, None]), j1b[None, :])
-    matrix -= work
-    matrix *= -b
-    np.subtract(lam[:, None] ** 2, lam[None, :] ** 2, out=work)
-    np.fill_diagonal(work, 1.0)
-    matrix /= work
-    del work
+    lam_j0b, lam_sq = lam * j0b, lam**2
+    # -b [lam_n J1(lam_m b) J0(lam_n b) - lam_m J0(lam_m b) J1(lam_n b)] / (lam_m^2 - lam_n^2), block of rows by
+    # block of rows (the same operations, in the same order, as the plain expression); in Fortran order the
+    # blocks are of rows of the transpose: index k runs over n, the other over m
+    by_columns = out.ndim == 2 and n > 1 and abs(out.strides[0]) < abs(out.strides[1])
+    target = out.T if by_columns else out
+    step = max(1, _BLOCK_ENTRIES // max(n, 1))
+    work = np.empty((min(step, n), n))
+    for start in range(0, n, step):
+        k = slice(start, min(start + step, n))
+        block, w = target[k], work[: k.stop - start]
+        if by_columns:  # block[n, m] = I_mn
+            np.multiply(lam[k, None], j1b[None, :], out=block)
+            block *= j0b[k, None]
+            np.multiply(lam_j0b[None, :], j1b[k, None], out=w)
+        else:  # block[m, n] = I_mn
+            np.multiply(lam[None, :], j1b[k, None], out=block)
+            block *= j0b[None, :]
+            np.multiply(lam_j0b[k, None], j1b[None, :], out=w)
+        block -= w
+        block *= -b
+        if by_columns:
+            np.subtract(lam_sq[None, :], lam_sq[k, None], out=w)
+        else:
+            np.subtract(lam_sq[k, None], lam_sq[None, :], out=w)
+        local = np.arange(k.stop - start)
+        w[local, start + local] = 1.0
+        block /= w
     with np.errstate(divide="ignore", invalid="ignore"):
         cross = np.where(x > 0, 2.0 * j0b * j1b / np.where(x > 0, x, 1.0), 1.0)
     diagonal = 0.5 * special.j1(lam) ** 2 - 0.5 * b * b * (j0b**2 + j1b**2 - cross)
-    np.fill_diagonal(matrix, diagonal)
-    return matrix
+    np.fill_diagonal(out, diagonal)
+    return out
 
 
 def coupling_matrix(lam, b):

@@ -14,8 +14,8 @@ from scipy import linalg
 
 from .. import validation
 from ..diagnostics import AccuracyWarning, IllConditioningWarning, ResolutionWarning, UnphysicalResultWarning
-from ..solvers.equilibration import equilibrate, scalings
-from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, resolution_limit, solve_series
+from ..solvers.equilibration import _row_blocks, equilibrate_in_place
+from ..solvers.weak_form import RCOND_WARN, WEAK_FORMS, closure_torque, complete_border, resolution_limit, solve_series
 from ..solvers.weak_form import assemble as assemble_double
 from ..special.zeros import bessel_j2_zeros
 from .reference import ReferenceSolution
@@ -95,53 +95,169 @@ def _row_order(pivots) -> np.ndarray:
     return perm
 
 
-def _bordered_factors(lu, pivots, column, row, corner):
-    """LU factors (getrf layout) of [[A, column], [row, corner]] from those of A (P A = L U).
+def _border(lu, order, column, row, corner):
+    """(u, l, pivot) of the LU factors of [[A, column], [row, corner]] from those of A (P A = L U, getrf layout,
+    ``order`` = ``_row_order`` of its interchanges).
 
-    diag(P, 1) [[A, c], [r, d]] = [[L, 0], [l, 1]] [[U, u], [0, d - l.u]] with L u = P c and l U = r:
-    two triangular solves, O(n^2).  The pivoting is A's (the border row is not a pivot candidate); a valid
-    factorisation all the same, which is all LAPACK's condition estimator needs.
+    diag(P, 1) [[A, c], [r, d]] = [[L, 0], [l, 1]] [[U, u], [0, d - l.u]] with L u = P c and l U = r: two
+    triangular solves, O(n^2).  The pivoting is A's (the border row is not a pivot candidate); a valid
+    factorisation all the same, which is all the condition estimate needs.
+    """
+    u = linalg.solve_triangular(lu, column[order], lower=True, unit_diagonal=True, check_finite=False)
+    l_row = linalg.solve_triangular(lu, row, trans="T", lower=False, check_finite=False)
+    return u, l_row, corner - l_row @ u
+
+
+def _factor_solves(lu, border=None, scale=None):
+    """(solve, solve_t): x -> U^-1 L^-1 x and x -> L^-T U^-T x with LU factors in getrf layout, without their
+    interchanges (the operator whose 1-norm dgecon estimates: ||U^-1 L^-1||_1 = ||A^-1||_1).
+
+    ``border`` = (u, l, pivot) of ``_border``: the factors [[L, 0], [l, 1]] [[U, u], [0, pivot]] of the bordered
+    matrix.  ``scale`` = (r_p, c), r_p = the row scaling in the factors' row order and c the column scaling: the
+    factors of R A C are (R_p L R_p^-1)(R_p U C) with the same interchanges, so U^-1 L^-1 becomes
+    C^-1 U^-1 L^-1 R_p^-1 (and its transpose R_p^-1 L^-T U^-T C^-1).
     """
     n = lu.shape[0]
-    u = linalg.solve_triangular(lu, column[_row_order(pivots)], lower=True, unit_diagonal=True)
-    l_row = linalg.solve_triangular(lu, row, trans="T", lower=False)
-    out = np.empty((n + 1, n + 1))
-    out[:n, :n] = lu
-    out[:n, n] = u
-    out[n, :n] = l_row
-    out[n, n] = corner - l_row @ u
-    return out, np.append(pivots, n)
+
+    def lower(x, trans):
+        return linalg.solve_triangular(lu, x, lower=True, unit_diagonal=True, trans=trans, check_finite=False)
+
+    def upper(x, trans):
+        return linalg.solve_triangular(lu, x, lower=False, trans=trans, check_finite=False)
+
+    def solve(x):
+        if scale is not None:
+            x = x / scale[0]
+        if border is None:
+            y = upper(lower(x, 0), 0)
+        else:
+            u, l_row, pivot = border
+            z = lower(x[:n], 0)
+            last = (x[n] - l_row @ z) / pivot
+            y = np.append(upper(z - u * last, 0), last)
+        return y if scale is None else y / scale[1]
+
+    def solve_t(x):
+        if scale is not None:
+            x = x / scale[1]
+        if border is None:
+            y = lower(upper(x, 1), 1)
+        else:
+            u, l_row, pivot = border
+            z = upper(x[:n], 1)
+            last = (x[n] - u @ z) / pivot
+            y = np.append(lower(z - l_row * last, 1), last)
+        return y if scale is None else y / scale[0]
+
+    return solve, solve_t
 
 
-def _scaled_factors(lu, pivots, row, col):
-    """LU factors of R A C (R, C diagonal) from those of A: P R A C = (R_p L R_p^-1)(R_p U C), R_p = P R P^T.
+#: Iterations of LAPACK's 1-norm estimator (dlacn2's ITMAX).
+_ESTIMATOR_ITERATIONS = 5
 
-    Same interchanges; O(n^2) instead of a new O(n^3) factorisation.
+
+def _inverse_norm_estimate(solve, solve_t, n: int) -> float:
+    """Hager-Higham estimate of ||B||_1 from products with B and B^T: LAPACK's dlacn2 step for step (Higham,
+    ACM TOMS 14 (1988) 381, Algorithm 4.1, as dgecon drives it), so the same estimate to rounding: the norm of
+    a computed B x (a lower bound, to rounding, usually the exact value; never more than a small factor below
+    it on these systems, tests/test_reference.py)."""
+    x = solve(np.full(n, 1.0 / n))
+    if n == 1:
+        return float(abs(x[0]))
+    estimate = float(np.sum(np.abs(x)))
+    sign = np.where(x >= 0.0, 1.0, -1.0)
+    x = solve_t(sign)
+    j = int(np.argmax(np.abs(x)))  # idamax: the first of equal maxima
+    iteration = 2
+    while True:
+        unit = np.zeros(n)
+        unit[j] = 1.0
+        x = solve(unit)
+        previous, estimate = estimate, float(np.sum(np.abs(x)))
+        new_sign = np.where(x >= 0.0, 1.0, -1.0)
+        if np.array_equal(new_sign, sign) or estimate <= previous:  # converged, or cycling
+            break
+        sign = new_sign
+        x = solve_t(sign)
+        last, j = j, int(np.argmax(np.abs(x)))
+        if x[last] == abs(x[j]) or iteration >= _ESTIMATOR_ITERATIONS:
+            break
+        iteration += 1
+    alternating = (1.0 + np.arange(n) / (n - 1)) * np.where(np.arange(n) % 2 == 0, 1.0, -1.0)
+    extra = 2.0 * (float(np.sum(np.abs(solve(alternating)))) / (3 * n))
+    return max(estimate, extra)
+
+
+def _rcond_estimate(lu, anorm, border=None, scale=None) -> float:
+    """dgecon's 1 / (||A||_1 ||A^-1||_1) for the matrix whose factors ``_factor_solves`` applies (0 for a zero
+    pivot, as dgecon)."""
+    pivots = np.append(np.diagonal(lu), [] if border is None else [border[2]])
+    if anorm == 0.0 or not np.all(pivots != 0.0):
+        return 0.0
+    solve, solve_t = _factor_solves(lu, border, scale)
+    with np.errstate(over="ignore", invalid="ignore"):
+        norm = _inverse_norm_estimate(solve, solve_t, pivots.size)
+    rcond = (1.0 / norm) / anorm if norm != 0.0 else 0.0
+    if math.isnan(rcond):
+        raise RuntimeError("the condition estimate is not a number")
+    return rcond
+
+
+def _bordered_norms(matrix, column, row, corner) -> dict:
+    """The 1-norms and scalings of A (``matrix``, Fortran order) and of [[A, column], [row, corner]], raw and
+    equilibrated, without forming the bordered matrix or any other of A's size: method -> (||M||_1, row scaling,
+    column scaling, ||R M C||_1).
+
+    The scalings are ``scalings``' of each matrix bit for bit (maxima are exact); the column sums of |M| and
+    |R M C| are summed pairwise down A's contiguous columns, the border's entry last: the sums of the plain
+    expressions to (N + log2 N) EPS relative (any order of summation of N + 1 non-negative terms is within
+    N EPS of the exact sum).
     """
-    r_p = row[_row_order(pivots)]
-    lower = np.tril(lu, -1) * (r_p[:, None] / r_p[None, :])
-    upper = np.triu(lu) * (r_p[:, None] * col[None, :])
-    return lower + upper
-
-
-def _rcond(factors, matrix) -> float:
-    """LAPACK's estimate (dgecon) of 1 / (||A||_1 ||A^-1||_1) from LU factors of ``matrix`` (getrf layout)."""
-    anorm = np.max(np.sum(np.abs(matrix), axis=0))
-    rcond, info = linalg.lapack.dgecon(factors, anorm, norm="1")
-    if info != 0:
-        raise RuntimeError(f"dgecon failed (info={info})")
-    return float(rcond)
+    n = matrix.shape[0]
+    blocks = _row_blocks(matrix.T.shape)  # blocks of columns
+    abs_row, abs_column = np.abs(row), np.abs(column)
+    row_max = np.zeros(n)
+    sums = np.empty(n)
+    for cols in blocks:
+        block = np.abs(matrix[:, cols])
+        np.maximum(row_max, np.max(block, axis=1), out=row_max)
+        sums[cols] = np.sum(block, axis=0)
+    if not np.all(np.isfinite(sums)) and not np.all(np.isfinite(matrix)):
+        raise ValueError("array must not contain infs or NaNs")
+    row_p = 1.0 / row_max
+    row_c = np.append(1.0 / np.maximum(row_max, abs_column), 1.0 / max(np.max(abs_row), abs(corner)))
+    col_p, col_c = np.empty(n), np.empty(n + 1)
+    last_c = abs_row * row_c[n]  # the border row, row-scaled
+    for cols in blocks:
+        block = matrix[:, cols]
+        col_p[cols] = 1.0 / np.max(np.abs(block * row_p[:, None]), axis=0)
+        col_c[cols] = 1.0 / np.maximum(np.max(np.abs(block * row_c[:n, None]), axis=0), last_c[cols])
+    border_c = np.abs(column * row_c[:n])
+    col_c[n] = 1.0 / max(np.max(border_c), abs(corner * row_c[n]))
+    sums_p, sums_c = np.empty(n), np.empty(n + 1)
+    for cols in blocks:
+        block = matrix[:, cols]
+        sums_p[cols] = np.sum(np.abs((block * row_p[:, None]) * col_p[None, cols]), axis=0)
+        sums_c[cols] = np.sum(np.abs((block * row_c[:n, None]) * col_c[None, cols]), axis=0)
+    sums_c[:n] += np.abs((row * row_c[n]) * col_c[:n])
+    sums_c[n] = np.sum(np.abs((column * row_c[:n]) * col_c[n])) + abs((corner * row_c[n]) * col_c[n])
+    raw_c = max(np.max(sums + abs_row), np.sum(abs_column) + abs(corner))
+    return {"published": (np.max(sums), row_p, col_p, np.max(sums_p)),
+            "complete": (raw_c, row_c, col_c, np.max(sums_c))}
 
 
 def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORMS, progress: bool = False) -> list:
     """1-norm condition numbers of the double-precision system vs N (raw and equilibrated).
 
-    kappa_1 = ||A||_1 ||A^-1||_1 with ||A^-1||_1 estimated by LAPACK dgecon (Hager-Higham, within a small
-    factor of the exact value, usually exact) from LU factors.  One O(N^3) factorisation per N serves the
-    four matrices: the published A is factorised, the complete system is A bordered by one row and column
-    (``_bordered_factors``) and the equilibrated ones are the same factors scaled by the row and column
-    scalings (``_scaled_factors``); each estimate is of the same operator inverse as from its own
-    factorisation, to rounding (relative kappa EPS < 1e-10 here, far below the estimator's own factor).
+    kappa_1 = ||A||_1 ||A^-1||_1 with ||A^-1||_1 estimated as LAPACK's dgecon estimates it (Hager-Higham, within
+    a small factor of the exact value, usually exact) from LU factors.  One O(N^3) factorisation per N serves
+    the four matrices: the published A is factorised, the complete system is A bordered by one row and column
+    (``_border``) and the equilibrated ones have the same factors scaled by the row and column scalings
+    (``_factor_solves``); the estimator's products with the inverse and its transpose are triangular solves
+    with A's factors and O(N) corrections, so each estimate is of the same operator inverse as from its own
+    factorisation, to rounding (relative kappa EPS < 1e-10 here, far below the estimator's own factor).  A is
+    assembled in LAPACK's layout and factored in place after ``_bordered_norms`` has taken the four 1-norms
+    and scalings from it and the border (no other array of its size).
 
     Returns
     -------
@@ -158,25 +274,24 @@ def condition_numbers(n_terms_list, stick_radius: float = 0.6, methods=WEAK_FORM
         sizes = tqdm(sizes, desc="condition numbers")
     for n in sizes:
         lam = bessel_j2_zeros(n)
-        complete, _, _ = assemble_double("complete", lam, stick_radius)
-        published = complete[:n, :n]  # the complete system borders the published one
-        lu, pivots = linalg.lu_factor(published, check_finite=True)
-        factors = {"published": (lu, pivots, published)}
+        # the published matrix in the layout LAPACK factors (in place, after its norms are taken); the complete
+        # system borders it
+        published, _, _ = assemble_double("published", lam, stick_radius, order="F")
+        column, row, corner, _, _ = complete_border(lam, stick_radius)
+        norms = _bordered_norms(published, column, row, corner)
+        lu, pivots = linalg.lu_factor(published, overwrite_a=True, check_finite=False)
+        del published
+        order = _row_order(pivots)
+        systems = {"published": (order, None)}
         if "complete" in methods:
-            lu_c, pivots_c = _bordered_factors(lu, pivots, complete[:n, n], complete[n, :n], complete[n, n])
-            factors["complete"] = (lu_c, pivots_c, complete)
+            systems["complete"] = (np.append(order, n), _border(lu, order, column, row, corner))
         for m in methods:
-            lu_m, pivots_m, matrix = factors[m]
-            row, col = scalings(matrix)
-            out.append(
-                {
-                    "n_terms": n,
-                    "method": m,
-                    "stick_radius": stick_radius,
-                    "raw": 1.0 / _rcond(lu_m, matrix),
-                    "equilibrated": 1.0 / _rcond(_scaled_factors(lu_m, pivots_m, row, col), equilibrate(matrix)),
-                }
-            )
+            order_m, border_m = systems[m]
+            anorm, row_scale, col_scale, anorm_equilibrated = norms[m]
+            raw = _rcond_estimate(lu, anorm, border_m)
+            equilibrated = _rcond_estimate(lu, anorm_equilibrated, border_m, (row_scale[order_m], col_scale))
+            out.append({"n_terms": n, "method": m, "stick_radius": stick_radius, "raw": 1.0 / raw,
+                        "equilibrated": 1.0 / equilibrated})
     return out
 
 
@@ -239,28 +354,29 @@ def weak_forms_at(stick_radius: float, n_terms: int) -> dict:
 def _weak_forms(b: float, lam: np.ndarray) -> dict:
     """The numbers of ``weak_forms_at`` (checked there)."""
     n = lam.size
-    complete, rhs_torque, rhs_constant = assemble_double("complete", lam, b)
-    published = complete[:n, :n]
-    row, col = scalings(published)
-    scaled = published * row[:, None] * col[None, :]
-    if not np.all(np.isfinite(scaled)):  # the scaling overflows: nothing below is a number
+    # the published matrix in the layout LAPACK factors, equilibrated and factored in place; the complete system
+    # borders it
+    scaled, rhs_torque, rhs_constant = assemble_double("published", lam, b, order="F")
+    column, t, d, torque_last, constant_last = complete_border(lam, b)
+    row, col, column_sums = equilibrate_in_place(scaled)
+    if not np.all(np.isfinite(column_sums)):  # the scaling overflows: nothing below is a number
         return {method: (math.inf, math.nan) for method in WEAK_FORMS} | {"rounding_bound": math.nan}
-    lu, pivots = linalg.lu_factor(scaled, check_finite=False)
-    rcond = _rcond(lu, scaled)
+    lu, pivots = linalg.lu_factor(scaled, overwrite_a=True, check_finite=False)
+    del scaled
+    rcond = _rcond_estimate(lu, np.max(column_sums))  # dgecon's estimate, by triangular solves
     if rcond < RCOND_WARN:
         warnings.warn(f"the weak forms for stick_radius={b:.6g}, n_terms={n} are ill-conditioned "
                       f"(reciprocal condition number {rcond:.2e})", IllConditioningWarning, stacklevel=3)
-    rhs = np.column_stack([rhs_torque[:n], rhs_constant[:n]])
+    rhs = np.column_stack([rhs_torque, rhs_constant])
     x = linalg.lu_solve((lu, pivots), rhs * row[:, None]) * col[:, None]  # as equilibrated_solve
-    border = linalg.lu_solve((lu, pivots), complete[:n, n] * row) * col
+    border = linalg.lu_solve((lu, pivots), column * row) * col
     out = {"published": (closure_torque("traction", "published", lam, b, x[:, 0], x[:, 1]), math.nan),
            "rounding_bound": EPS / rcond}
-    t, d = complete[n, :n], complete[n, n]
     schur = d - t @ border
     if abs(schur) < 1e3 * EPS * (abs(d) + np.abs(t) @ np.abs(border)):
         warnings.warn(f"block elimination of the complete system at stick_radius={b:.6g}, n_terms={n}: the Schur "
                       f"complement {schur:.3g} is at rounding level", AccuracyWarning, stacklevel=3)
-    omega = (np.array([rhs_torque[n], rhs_constant[n]]) - t @ x) / schur
+    omega = (np.array([torque_last, constant_last]) - t @ x) / schur
     coefficients = x - border[:, None] * omega[None, :]
     solution = np.vstack([coefficients, omega[None, :]])
     torque = closure_torque("traction", "complete", lam, b, solution[:, 0], solution[:, 1])
