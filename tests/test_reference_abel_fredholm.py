@@ -30,7 +30,7 @@ from tolerances import (  # noqa: E402 (after the skip)
 
 from torsional_contact import solve  # noqa: E402 (after the skip)
 from torsional_contact.io.cli import main as cli_main  # noqa: E402 (after the skip)
-from torsional_contact.verification import kernels_mp, nystrom_mp, special_mp  # noqa: E402 (after the skip)
+from torsional_contact.verification import kernels_mp, nystrom_mp, sinh_excess_mp, special_mp  # noqa: E402 (after the skip)
 from torsional_contact.verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm  # noqa: E402 (after the skip)
 from torsional_contact.verification.arbitrary_precision import arb_radius, arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
 from torsional_contact.verification.nystrom_mp import nodes_for_digits, solve_state  # noqa: E402 (after the skip)
@@ -307,7 +307,7 @@ def test_cancelled_bits_groups_are_those_of_the_scalar_formula():
             return 32 * math.ceil((2.0 * (math.log2(2.5) - math.log2(size)) + 8) / 32)
         return 32 * math.ceil((2.0 * math.log2(2.5 / size) + 8) / 32)
 
-    groups = special_mp._cancelled_bits_groups(sizes)
+    groups = sinh_excess_mp._cancelled_bits_groups(sizes)
     assigned = {index: extra for extra, members in groups for index in members}
     assert sorted(assigned) == list(range(sizes.size))  # every product in exactly one group
     assert [assigned[i] for i in range(sizes.size)] == [scalar(float(x)) for x in sizes]
@@ -482,7 +482,7 @@ def _sinh_excess_rows(points, xi, method, lengths, blocks):
                 if values[k] is not None:
                     continue
                 size = float(xi[k]) * t_float
-                extra = 0 if size >= 0.5 else (-1 if size == 0.0 else special_mp._cancelled_bits(size))
+                extra = 0 if size >= 0.5 else (-1 if size == 0.0 else sinh_excess_mp._cancelled_bits(size))
                 if extra < 0:
                     values[k] = flint.arb(0)
                     continue

@@ -37,9 +37,10 @@ from scipy import special  # the normal quantiles (scipy.stats: the same functio
 
 from .loop_model import LoopModel
 from .profile import fit
+from .results import Estimate
 
 __all__ = ["bootstrap_intervals", "bias_corrected_percentiles", "bias_correction", "percentile_levels",
-           "unresolved_ends", "BootstrapInterval"]
+           "unresolved_ends", "BootstrapInterval", "with_bootstrap", "unresolved_note"]
 
 
 @dataclass(frozen=True)
@@ -119,3 +120,36 @@ def bootstrap_intervals(model: LoopModel, p, scale2: float, count: int, confiden
         ends, refits = unresolved_ends(levels, count)
         out[name] = BootstrapInterval((lo, hi), bias, ends, refits)
     return out
+
+
+def with_bootstrap(estimate: Estimate, interval, factor: float, bias: float) -> Estimate:
+    """``estimate`` with its bootstrap interval (the quantity's, times ``factor``) and bias correction z_0."""
+    lo, hi = interval
+    scaled = (None if lo is None else factor * lo, None if hi is None else factor * hi)
+    return Estimate(estimate.value, estimate.stderr, estimate.interval, estimate.identified, estimate.lower_bound,
+                    scaled, estimate.assumed_end, bias)
+
+
+def unresolved_note(boot: dict, count: int) -> str:
+    """What the message says of bootstrap ends at levels ``count`` refits do not resolve ("" if none)."""
+    flipped = {"lower": "upper", "upper": "lower"}
+    ends, needed = [], []
+    for key, symbol in (("slip_torque", "f"), ("product", "G"), ("compliance", "C")):
+        item = boot[key]
+        names = sorted(flipped[e] if key == "product" else e for e in item.unresolved)
+        if names:
+            bias = -item.bias if key == "product" else item.bias  # G's own z_0 (``Estimate.bootstrap_bias``)
+            ends.append(f"the {' and '.join(names)} end{'s' if len(names) > 1 else ''} of {symbol} "
+                        f"(z_0 = {bias:.2f})")
+            count_ends = len(names)
+            if item.refits_needed is not None:
+                needed.append(item.refits_needed)
+            ends[-1] = (ends[-1], count_ends)
+    if not ends:
+        return ""
+    several = sum(n for _, n in ends) > 1
+    more = f"; about {max(needed)} refits resolve {'them' if several else 'it'}" if needed else ""
+    return (f"bootstrap: the bias-corrected level{'s' if several else ''} of {' and '.join(t for t, _ in ends)} "
+            f"lie{'' if several else 's'} beyond what {count} refits resolve (1/{count + 1} from either side): "
+            f"{'such an end is' if several else 'that end is'} the extreme refit, and the bootstrap interval too "
+            f"narrow{more}")

@@ -504,17 +504,17 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
         warnings.warn(message, NoiseLimitedFitWarning, stacklevel=3)
     n_boot = 0
     if bootstrap:
-        from .bootstrap import bootstrap_intervals
+        from .bootstrap import bootstrap_intervals, unresolved_note, with_bootstrap
 
         boot = bootstrap_intervals(model, p, scale2, bootstrap, confidence, seed, lower, upper, KAPPA_MAX)
         n_boot = int(bootstrap)
-        friction = _with_bootstrap(friction, boot["slip_torque"].interval, to_f, boot["slip_torque"].bias)
+        friction = with_bootstrap(friction, boot["slip_torque"].interval, to_f, boot["slip_torque"].bias)
         lo, hi = boot["product"].interval
         # G = 1 / (c_g y) falls as y rises: y's lower end is G's upper end, and the fraction below flips
-        modulus = _with_bootstrap(modulus, (g_from(hi), g_from(lo)), 1.0, -boot["product"].bias)
-        compliance_estimate = _with_bootstrap(compliance_estimate, boot["compliance"].interval, 1.0,
+        modulus = with_bootstrap(modulus, (g_from(hi), g_from(lo)), 1.0, -boot["product"].bias)
+        compliance_estimate = with_bootstrap(compliance_estimate, boot["compliance"].interval, 1.0,
                                               boot["compliance"].bias)
-        unresolved = _unresolved_note(boot, n_boot)
+        unresolved = unresolved_note(boot, n_boot)
         if unresolved:
             message += "; " + unresolved
             warnings.warn(unresolved, AccuracyWarning, stacklevel=3)
@@ -528,35 +528,3 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
         stick_critical=stick_critical, noise_limited=noise_limited, interval_method="profile likelihood",
         dof=int(model.torque.size - 4), fitted_torque=fitted, message=message, bootstrap=n_boot,
         parameters=np.array(p, dtype=float), **common)
-
-
-def _with_bootstrap(estimate: Estimate, interval, factor: float, bias: float) -> Estimate:
-    lo, hi = interval
-    scaled = (None if lo is None else factor * lo, None if hi is None else factor * hi)
-    return Estimate(estimate.value, estimate.stderr, estimate.interval, estimate.identified, estimate.lower_bound,
-                    scaled, estimate.assumed_end, bias)
-
-
-def _unresolved_note(boot: dict, count: int) -> str:
-    """What the message says of bootstrap ends at levels ``count`` refits do not resolve ("" if none)."""
-    flipped = {"lower": "upper", "upper": "lower"}
-    ends, needed = [], []
-    for key, symbol in (("slip_torque", "f"), ("product", "G"), ("compliance", "C")):
-        item = boot[key]
-        names = sorted(flipped[e] if key == "product" else e for e in item.unresolved)
-        if names:
-            bias = -item.bias if key == "product" else item.bias  # G's own z_0 (``Estimate.bootstrap_bias``)
-            ends.append(f"the {' and '.join(names)} end{'s' if len(names) > 1 else ''} of {symbol} "
-                        f"(z_0 = {bias:.2f})")
-            count_ends = len(names)
-            if item.refits_needed is not None:
-                needed.append(item.refits_needed)
-            ends[-1] = (ends[-1], count_ends)
-    if not ends:
-        return ""
-    several = sum(n for _, n in ends) > 1
-    more = f"; about {max(needed)} refits resolve {'them' if several else 'it'}" if needed else ""
-    return (f"bootstrap: the bias-corrected level{'s' if several else ''} of {' and '.join(t for t, _ in ends)} "
-            f"lie{'' if several else 's'} beyond what {count} refits resolve (1/{count + 1} from either side): "
-            f"{'such an end is' if several else 'that end is'} the extreme refit, and the bootstrap interval too "
-            f"narrow{more}")

@@ -136,7 +136,7 @@ class XiQuadrature:
     blocks : tuple of (int, tuple of arb, tuple of arb)
         Runs of at least ``MIN_BLOCK_PANELS`` panels of equal width (the capped ones): (index of
         their first node, the panels' midpoints c_p, the offsets d_j), their nodes being exactly
-        c_p + d_j in that order (``special_mp.sinh_excess_matrix`` factors exp(xi t) over them).
+        c_p + d_j in that order (``sinh_excess_mp.sinh_excess_matrix`` factors exp(xi t) over them).
     """
 
     nodes: tuple

@@ -81,7 +81,7 @@ from .kernels_mp import (
     xi_layer,
     xi_sum_truncation,
 )
-from .special_mp import sinh_excess_matrix, sinh_excess_values
+from .sinh_excess_mp import sinh_excess_matrix, sinh_excess_values
 
 __all__ = ["AbelFredholmState", "nodes_for_digits", "chebyshev_points", "interface_points", "solve_state"]
 
