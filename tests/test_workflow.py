@@ -21,6 +21,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from tolerances import assert_within
 
 ROOT = Path(__file__).resolve().parents[1]
 TEST_CONFIG = "config/test.yaml"
@@ -130,6 +131,28 @@ def test_a_clean_build_survives_a_hard_kill(interrupted_build, dry_run_when_buil
     assert locked.returncode != 0 and "--unlock" in locked.stdout + locked.stderr
     assert len(compare_builds.output_files(out)) > 40
     assert "Nothing to be done" in dry_run_when_built
+
+
+def test_the_ladder_reuses_the_cross_checks_converged_weak_forms(built):
+    """The test configuration's cross-check converges at the ladder's largest N: the ladder's rows there are the
+    cross-check's numbers, bit for bit (not factorised again), and a fresh solve in this process (perhaps with
+    other BLAS threads) agrees to rounding: two solves of the system differ by about twice the relative rounding
+    EPS / rcond of one (the bound the cross-check records); ten times that."""
+    import json
+
+    from torsional_contact.verification import crosscheck
+
+    shared = json.loads((built / "verification" / "weak_forms_converged.json").read_text())
+    ladder = json.loads((built / "verification" / "precision_ladder.json").read_text())
+    n = shared["n_terms"]
+    rows = [r for r in ladder["weak_forms"] if r["n_terms"] == n]
+    assert rows and {r["stick_radius"] for r in rows} <= {s["stick_radius"] for s in shared["weak_forms"]}
+    for row in rows:
+        entry = next(s for s in shared["weak_forms"] if s["stick_radius"] == row["stick_radius"])
+        assert row["torque"] == entry[f"{row['method']}_torque"]
+        fresh = crosscheck.weak_forms_at(row["stick_radius"], n)
+        assert_within(abs(fresh[row["method"]][0] - row["torque"]), 10 * entry["rounding_bound"] * abs(row["torque"]),
+                      "a second factorisation: ten times the solve's rounding")
 
 
 def test_manuscript_cites_every_reference_and_resolves_every_label(built):

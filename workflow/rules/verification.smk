@@ -34,6 +34,7 @@ rule precision_crosscheck:
         references=expand(f"{OUT}/verification/reference_{{method}}.json", method=WEAK_FORMS),
     output:
         json=f"{OUT}/verification/crosscheck.json",
+        converged=f"{OUT}/verification/weak_forms_converged.json",
     params:
         converged=config["crosscheck"]["converged_n_terms"],
         conditions=config["crosscheck"]["condition_n_terms"],
@@ -45,7 +46,8 @@ rule precision_crosscheck:
         mem_mb=4000,
     shell:
         "python {input.script} --references {input.references} --converged-n-terms {params.converged}"
-        " --condition-n-terms {params.conditions} --json {output.json} > {log} 2>&1"
+        " --condition-n-terms {params.conditions} --json {output.json} --converged-json {output.converged}"
+        " > {log} 2>&1"
 
 
 rule errata:
@@ -209,6 +211,8 @@ rule precision_ladder:
         lib=lib("workflow/scripts/precision_ladder.py"),
         references=expand(f"{OUT}/verification/abel_fredholm/b{{radius}}.json", radius=PRECISION_RADII),
         weak=expand(f"{OUT}/verification/reference_{{method}}.json", method=WEAK_FORMS),
+        # both weak forms at the cross-check's converged N (the ladder's largest: not factorised twice)
+        converged=f"{OUT}/verification/weak_forms_converged.json",
     output:
         json=f"{OUT}/verification/precision_ladder.json",
         tex=f"{OUT}/tables/precision_ladder.tex",
@@ -229,6 +233,7 @@ rule precision_ladder:
         "python {input.script} --references {input.references} --weak-references {input.weak}"
         " --weak-radii {params.weak_radii}"
         " --weak-n-terms {params.weak_n} --weak-digits {params.weak_digits} --main-radius {params.main}"
+        " --converged {input.converged}"
         " --json {output.json} --tex {output.tex} --tex-weak {output.weak} --macros {output.macros} > {log} 2>&1"
 
 

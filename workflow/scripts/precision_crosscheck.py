@@ -31,6 +31,8 @@ def main():
     p.add_argument("--converged-n-terms", type=int, required=True)
     p.add_argument("--condition-n-terms", type=int, nargs="+", required=True)
     p.add_argument("--json", required=True)
+    p.add_argument("--converged-json", required=True, help="both weak forms at --converged-n-terms and every stick "
+                   "radius, every bit (crosscheck.weak_forms_at; the precision ladder reuses them at that N)")
     a = p.parse_args()
     solutions = [s for path in a.references for s in load_reference_json(path)]
     n_terms = solutions[0].n_terms
@@ -41,7 +43,9 @@ def main():
     with warnings.catch_warnings():
         for category in (ResolutionWarning, IllConditioningWarning):  # measured, not hidden: see the JSON
             warnings.simplefilter("ignore", category)
-        by_radius = [crosscheck.truncation_errors(b, n_terms, a.converged_n_terms) for b in radii]
+        converged = {b: crosscheck.weak_forms_at(b, a.converged_n_terms) for b in radii}
+        by_radius = [crosscheck.truncation_errors(b, n_terms, a.converged_n_terms, converged=converged[b])
+                     for b in radii]
     truncation = [row for method in ("complete", "published") for rows in by_radius for row in rows
                   if row["method"] == method]
     conditions = crosscheck.condition_numbers(a.condition_n_terms, 0.6, progress=True)
@@ -77,6 +81,13 @@ def main():
                "condition numbers: LAPACK dgecon's estimate (its Hager-Higham iteration, dlacn2, through triangular "
                "solves) from one LU per N (bordered and scaled for the other three)",
                precision="IEEE double vs the reference's digits", resolution={"n_terms": n_terms})
+    write_json(a.converged_json, {"n_terms": a.converged_n_terms, "weak_forms": [
+        {"stick_radius": b, "published_torque": out["published"][0], "complete_torque": out["complete"][0],
+         "complete_rigid_rotation": out["complete"][1], "rounding_bound": out["rounding_bound"]}
+        for b, out in converged.items()]},
+        method="crosscheck.weak_forms_at: both weak forms from one LU of the equilibrated published matrix (the "
+        "complete one by block elimination), in double precision; every bit (JSON floats round-trip), for the "
+        "precision ladder", resolution={"n_terms": a.converged_n_terms})
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ Writes a JSON (metadata), two LaTeX tables and LaTeX macros.
 import argparse
 import decimal
 import json
+import math
 import warnings
 
 import mpmath
@@ -92,9 +93,25 @@ def worst(rows, key):
                else {})}
 
 
-def weak_form_rows(refs, radii, n_terms_list):
+def solved_elsewhere(path) -> dict:
+    """{(b, N): ``crosscheck.weak_forms_at(b, N)``} from the cross-check's JSON of its converged systems (its
+    --converged-json; {} without one): the same numbers, not factorised twice."""
+    if not path:
+        return {}
+    with open(path) as handle:
+        data = json.load(handle)
+    n = int(data["n_terms"])
+    return {(float(row["stick_radius"]), n): {"published": (row["published_torque"], math.nan),
+                                              "complete": (row["complete_torque"], row["complete_rigid_rotation"]),
+                                              "rounding_bound": row["rounding_bound"]}
+            for row in data["weak_forms"]}
+
+
+def weak_form_rows(refs, radii, n_terms_list, known=None):
     """Both weak forms at every N in ``n_terms_list`` and b in ``radii`` against the truth: one factorisation per
-    (b, N) for both (``crosscheck.weak_forms_at``; ``rounding_bound`` = EPS / rcond of the equilibrated system)."""
+    (b, N) for both (``crosscheck.weak_forms_at``; ``rounding_bound`` = EPS / rcond of the equilibrated system),
+    except the (b, N) in ``known`` (``solved_elsewhere``)."""
+    known = known or {}
     rows = []
     for ref in refs:
         if float(ref["stick_radius"]) not in radii:
@@ -102,7 +119,7 @@ def weak_form_rows(refs, radii, n_terms_list):
         b = float(ref["stick_radius"])
         with warnings.catch_warnings():  # published T* > 4/3, Gibbs overshoot: reported, not hidden
             warnings.simplefilter("ignore", TorsionalContactWarning)
-            solved = {n: crosscheck.weak_forms_at(b, n) for n in n_terms_list}
+            solved = {n: known[b, n] if (b, n) in known else crosscheck.weak_forms_at(b, n) for n in n_terms_list}
         for method in ("published", "complete"):
             for n in n_terms_list:
                 torque, rigid_rotation = solved[n][method]
@@ -245,6 +262,8 @@ def main():
                    help="JSONs of reference_weak_form.py: their N = 145 systems in --weak-digits digits are "
                    "not solved again")
     p.add_argument("--main-radius", type=float, default=0.6)
+    p.add_argument("--converged", default=None, help="the cross-check's JSON of both weak forms at its converged N "
+                   "(precision_crosscheck.py --converged-json): the (b, N) it holds are not factorised again")
     p.add_argument("--json", required=True)
     p.add_argument("--tex", required=True, help="the ladder table")
     p.add_argument("--tex-weak", required=True, help="weak-form errors against N")
@@ -255,7 +274,7 @@ def main():
     digits = refs[0]["digits"]
     convergence = convergence_rows(refs)
     double = double_fast_rows(refs)
-    weak = weak_form_rows(refs, a.weak_radii, a.weak_n_terms)
+    weak = weak_form_rows(refs, a.weak_radii, a.weak_n_terms, solved_elsewhere(a.converged))
     extrapolated = extrapolated_rows(refs, weak, a.weak_radii)
     ladder = ladder_rows(refs, a.weak_radii, double, a.weak_digits, weak_references(a.weak_references))
     summary = {key: worst(double, key) for key in ("torque_error", "rigid_rotation_error", "traction_error",

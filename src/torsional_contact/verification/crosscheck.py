@@ -384,11 +384,14 @@ def _weak_forms(b: float, lam: np.ndarray) -> dict:
     return out
 
 
-def truncation_errors(stick_radius: float, n_terms: int, n_terms_converged: int, methods=WEAK_FORMS) -> list:
+def truncation_errors(stick_radius: float, n_terms: int, n_terms_converged: int, methods=WEAK_FORMS,
+                      converged: dict | None = None) -> list:
     """``truncation_error`` for each of ``methods`` at one b, the converged systems solved with one factorisation
     (``weak_forms_at``): the published T* is computed as ``solve_series`` computes it, the complete one by
-    block elimination (agreeing with ``solve_series`` to kappa EPS, ~1e-11 relative at N = 4000)."""
-    converged = weak_forms_at(stick_radius, n_terms_converged)
+    block elimination (agreeing with ``solve_series`` to kappa EPS, ~1e-11 relative at N = 4000).  ``converged``:
+    ``weak_forms_at(stick_radius, n_terms_converged)`` if the caller has it already."""
+    if converged is None:
+        converged = weak_forms_at(stick_radius, n_terms_converged)
     out = []
     for method in methods:
         with warnings.catch_warnings():
