@@ -32,7 +32,13 @@ from torsional_contact import solve  # noqa: E402 (after the skip)
 from torsional_contact.io.cli import main as cli_main  # noqa: E402 (after the skip)
 from torsional_contact.verification import kernels_mp, nystrom_mp, sinh_excess_mp, special_mp  # noqa: E402 (after the skip)
 from torsional_contact.verification.abel_fredholm_mp import MAX_DIGITS, solve_reference_abel_fredholm  # noqa: E402 (after the skip)
-from torsional_contact.verification.arbitrary_precision import arb_radius, arb_to_mp, mp_to_arb, working_digits  # noqa: E402 (after the skip)
+from torsional_contact.verification.arbitrary_precision import (  # noqa: E402 (after the skip)
+    arb_radius,
+    arb_to_mp,
+    mp_to_arb,
+    to_full_accuracy,
+    working_digits,
+)
 from torsional_contact.verification.nystrom_mp import nodes_for_digits, solve_state  # noqa: E402 (after the skip)
 
 REFERENCE_RADII = ("0.1", "0.3", "0.5", "0.6", "0.7", "0.9")
@@ -530,8 +536,8 @@ def test_sinh_excess_matrix_is_the_entrywise_evaluation(b):
 def test_bessel_k2_i2_with_shared_digamma_weights(digits):
     """``bessel_k2_i2`` takes the weights psi(k+1) + psi(k+3) of its K2 series from a table per precision
     (``_digamma_weights``, extended on demand): bit for bit the series with the harmonic numbers summed inline,
-    whether the table is empty, short or long, and within its ball of mpmath's K2 and I2 at three times the
-    digits (an independent evaluation)."""
+    whether the table is empty, short or long, and its ball holds Arb's own K2 and I2 (``arb.bessel_k``,
+    ``arb.bessel_i``, an independent evaluation) at three times the digits (mpmath's K2 takes 5 s at 300 digits)."""
     with working_digits(digits):
         prec = flint.ctx.prec
         for text in ("1e-6", "0.3", "2.5", "17", "40.25", "66"):
@@ -564,16 +570,17 @@ def test_bessel_k2_i2_with_shared_digamma_weights(digits):
             inline = (+k2, +i2)
             for values in (first, second):
                 assert [_key(v) for v in values] == [_key(v) for v in inline]
-            with mpmath.workdps(3 * digits):
-                point = _mp(x)
-                assert first[0].contains(mp_to_arb(mpmath.besselk(2, point)))
-                assert first[1].contains(mp_to_arb(mpmath.besseli(2, point)))
+            with working_digits(3 * digits):
+                k2_fine = to_full_accuracy(lambda y: y.bessel_k(2), x)
+                i2_fine = to_full_accuracy(lambda y: y.bessel_i(2), x)
+            assert first[0].contains(k2_fine.mid()) and first[1].contains(i2_fine.mid())
 
 
 def test_bessel_ratio_asymptotic_by_horner_in_c():
     """Above the switch, ``bessel_ratio`` sums the Hankel expansions of all the nodes with the same number of
     terms at once (``arb_poly.evaluate``): bit for bit the Horner loop term by term in Python (also its own
-    fallback above 1024 bits), and within 2^(8 - prec) relative of mpmath's K2/I2 at three times the digits."""
+    fallback above 1024 bits), and within 2^(8 - prec) relative of Arb's own K2/I2 (``arb.bessel_k``,
+    ``arb.bessel_i``) at three times the digits."""
     for digits in (30, 49, 320):
         with working_digits(digits):
             prec = flint.ctx.prec
@@ -591,9 +598,10 @@ def test_bessel_ratio_asymptotic_by_horner_in_c():
                 loop = flint.arb.pi() * (-2 * x).exp() * numerator / denominator
                 assert _key(ratio) == _key(loop)
                 if digits < 100:
-                    with mpmath.workdps(3 * digits):
-                        exact = mpmath.besselk(2, _mp(x)) / mpmath.besseli(2, _mp(x))
-                        assert abs(_mp(ratio) / exact - 1) < mpmath.mpf(2) ** (8 - prec)
+                    with working_digits(3 * digits):
+                        exact = (to_full_accuracy(lambda y: y.bessel_k(2), x)
+                                 / to_full_accuracy(lambda y: y.bessel_i(2), x))
+                        assert abs(ratio.mid() / exact - 1) < flint.arb(2) ** (8 - prec)
 
 
 @pytest.mark.parametrize("digits", [30, 49])
