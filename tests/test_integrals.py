@@ -120,3 +120,21 @@ def test_limits_b_zero_and_one():
     # at b = 1 the integrals vanish; their closed forms cancel to the rounding of terms ~ J(lam)^2 / lam <= 1
     assert_close(integrals.lommel_matrix(lam, 1.0), 0.0, "cancellation of O(1) terms: 8 ulp", atol=8 * EPS)
     assert_close(integrals.load_vector(lam, 1.0, 1.3), 0.0, "cancellation of O(1) terms: 8 ulp", atol=8 * EPS)
+
+
+def test_load_integral_constant_keeps_g_at_the_eigenvalues_without_mixing_them_up():
+    """G(lam) of ``load_integral_constant`` is kept per eigenvalue array: the numbers of a fresh
+    (G(lam) - G(lam b)) / lam^2 at every b, for the array it was computed for and not for another of the same size
+    (one eigenvalue moved by 0.1 %: its G changes), nor for a 2-d or a non-contiguous array (not kept)."""
+    lam = bessel_j2_zeros(145)
+    nudged = lam.copy()
+    nudged[77] *= 1.001
+    assert integrals.integral_t_j1(nudged[77:78])[0] != integrals.integral_t_j1(lam[77:78])[0]
+    for values in (lam, nudged, lam[::2], np.stack([lam, nudged])):
+        for b in (0.05, 0.6, 0.98):
+            fresh = (integrals.integral_t_j1(values) - integrals.integral_t_j1(values * b)) / (values * values)
+            assert np.array_equal(integrals.load_integral_constant(values, b), fresh)
+    # the kept values cannot be changed by a caller
+    kept = integrals._integral_t_j1_kept(lam.tobytes())
+    with pytest.raises(ValueError):
+        kept[0] = 0.0
