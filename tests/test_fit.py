@@ -108,6 +108,37 @@ def test_skeleton_inverse_against_root_finding(kappa):
                   "exact for a quadratic: |error| / (rounding of the slopes over 2 step and of T*'')", exact=True)
 
 
+@pytest.mark.parametrize("kappa", [0.0, 0.3, loop_fit.KAPPA_MAX])
+def test_skeleton_at_and_beyond_its_last_node_against_the_clipped_evaluation(kappa):
+    """``Skeleton`` evaluates a point at or beyond its last node (or NaN) on the last piece with |x| clipped to that
+    node: bit for bit what the direct evaluation (the piece from the inner nodes, |x| clipped, T*' and T*'' set to 0
+    beyond, omega_m continued) gives, for arrays with and without such points."""
+    skeleton = Skeleton(kappa)
+    nodes = skeleton._x
+    last = nodes[-1]
+    inside = np.concatenate([np.linspace(0.0, last, 37)[:-1], nodes[:-1], nodes[1:-1] - 1e-9, [1.0, 0.999]])
+    outside = np.array([last, np.nextafter(last, np.inf), 1.5 * last, np.nan])
+    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]])):
+        a = np.abs(x)
+        j = np.searchsorted(nodes[1:-1], a, side="right")
+        c0, c1, c2, c3 = (c[j] for c in skeleton._t_coefficients)
+        dx = np.minimum(a, last) - nodes[j]
+        beyond = a > last
+        t = np.sign(x) * (c0 + dx * (c1 + dx * (c2 + dx * c3)))
+        slope = np.where(beyond, 0.0, c1 + dx * (2.0 * c2 + 3.0 * dx * c3))
+        second = np.sign(x) * np.where(beyond, 0.0, 2.0 * c2 + 6.0 * dx * c3)
+        got_t, got_slope, got_second = skeleton(x, curvature=True)
+        for got, expected in ((got_t, t), (got_slope, slope), (got_second, second)):
+            assert np.array_equal(got, expected, equal_nan=True)
+        assert np.array_equal(skeleton(x)[0], t, equal_nan=True)
+        w0, w1, w2, w3 = (c[j] for c in skeleton._power_basis(skeleton._omega, skeleton._omega_slope))
+        omega = w0 + dx * (w1 + dx * (w2 + dx * w3))
+        with np.errstate(invalid="ignore"):
+            extra = (a - last) / kappa if kappa > 0 else np.where(beyond, np.inf, 0.0)
+        omega = np.sign(x) * np.where(beyond, omega + extra, omega)
+        assert np.array_equal(skeleton(x, rotation=True)[2], omega, equal_nan=True)
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_twist_driven_memory_rules_match_the_torque_driven_ones(seed):
     """Torques from a twist history (fitting.masing) against histories.analyse_signal on the same history."""

@@ -83,6 +83,7 @@ FOOT_ITERATIONS = 12
 FOOT_GRID = np.linspace(-1.0, 1.0, 9)
 #: Fractions of a foot-point step tried at once; a sample keeps the best that lowers its distance.
 STEP_FRACTIONS = np.array([1.0, 0.5, 0.25, 1.0 / 16.0])
+_FRACTIONS_COLUMN = STEP_FRACTIONS[:, None]
 
 
 class LoopModel:
@@ -114,7 +115,6 @@ class LoopModel:
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
         self._columns = np.arange(self.twist.size)
-        self._observed = np.stack([self.torque, self.twist])
 
     @property
     def size(self) -> int:
@@ -158,7 +158,7 @@ class LoopModel:
 
     def _project(self, p):
         """(foot points, torque and slope there), cached for the last parameters."""
-        key = tuple(float(v) for v in p)
+        key = np.asarray(p, dtype=float).tolist()  # the same floats (and the same equality) as float(v) for v in p
         if self._foot[0] == key:
             return self._foot[1]
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
@@ -178,30 +178,38 @@ class LoopModel:
         # one often enough to make the sum of squares jump as the parameters move.  The grid is (grid point,
         # sample); every sample's column shares its segment.
         columns = self._columns
-        misfit = (self.torque - self.torque_at(p, self.twist)[0]) ** 2 / s_t2
+        measured = torque_along(path, self.twist - offset, self.segment, branches["value"], turning=turning,
+                                lookup=lookup)[0]  # ``torque_at`` at the measured twists
+        misfit = (self.torque - measured) ** 2 / s_t2
         reach = self.twist_noise * np.sqrt(misfit)
         grid = self.twist + FOOT_GRID[:, None] * reach
         g_grid, s_grid, c_grid = curve(grid, self.segment)
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
-        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far
-        state = np.array([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
-        state = self._descend(curve, state, columns)
+        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and the
+        # misfit there (its element of ``values``); the grid point of each sample in the flattened (grid point,
+        # sample) arrays
+        pick = values.argmin(axis=0) * columns.size + columns
+        state = np.array([grid, g_grid, s_grid, c_grid]).reshape(4, -1).take(pick, axis=1)
+        state = self._descend(curve, state, columns, values.take(pick))
         if lookup.thresholds:
             state = self._across_corners(curve, state, lookup, offset, reach)
         u, torque, slope = state[0], state[1], state[2]
         self._foot = (key, (u, torque, slope))
         return self._foot[1]
 
-    def _descend(self, curve, start, samples):
+    def _descend(self, curve, start, samples, misfit=None):
         """Newton's steps (``_project``) for the samples ``samples`` from their states ``start`` (rows twist, torque,
-        slope and curvature, one column per sample) until none gains more than ``FOOT_GAIN``: their final states."""
+        slope and curvature, one column per sample; ``misfit``: their squared distances if known) until none gains
+        more than ``FOOT_GAIN``: their final states."""
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         positions = np.arange(samples.size)
         state = start.copy()
-        # the samples still moving, with their observations, segments and states (the iteration's own copies)
-        active, observed, segment, current = positions, self._observed[:, samples], self.segment[samples], state.copy()
+        # the samples still moving, with their observations, segments, states and misfits (the iteration's own copies)
+        active, t_obs, w_obs, segment = positions, self.torque[samples], self.twist[samples], self.segment[samples]
+        w, g, s, c = start
+        if misfit is None:
+            misfit = (t_obs - g) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2
         for _ in range(FOOT_ITERATIONS):
-            (t_obs, w_obs), (w, g, s, c) = observed, current
             with np.errstate(over="ignore", invalid="ignore"):
                 torque_misfit, twist_misfit = t_obs - g, w_obs - w
                 gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
@@ -210,27 +218,31 @@ class LoopModel:
                 step = gradient / np.where(newton > 0.1 * gauss_newton, newton, gauss_newton)
                 gain = step * gradient  # predicted decrease of the misfit
             # no gain where it is NaN or +inf (FOOT_GAIN > 0)
-            keep = (gain > FOOT_GAIN) & (gain != np.inf)
-            active = active[keep]
-            if active.size == 0:
+            keep = ((gain > FOOT_GAIN) & (gain != np.inf)).nonzero()[0]
+            if keep.size == 0:
                 break
-            observed, segment, step, w = observed[:, keep], segment[keep], step[keep], w[keep]
-            t_obs, w_obs = observed
-            misfit = torque_misfit[keep] ** 2 / s_t2 + twist_misfit[keep] ** 2 / s_w2
+            if keep.size < active.size:
+                active, t_obs, w_obs, segment = active[keep], t_obs[keep], w_obs[keep], segment[keep]
+                step, w, misfit = step[keep], w[keep], misfit[keep]
             # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if it
             # lowers the misfit
-            trial = w + STEP_FRACTIONS[:, None] * step
+            trial = w + _FRACTIONS_COLUMN * step
             g_trial, s_trial, c_trial = curve(trial, segment)
             trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
-            best = np.argmin(trial_misfit, axis=0)
-            within = positions[:active.size]
-            lower = trial_misfit[best, within] <= misfit
+            # each sample's best fraction in the flattened (fraction, sample) arrays
+            pick = trial_misfit.argmin(axis=0) * active.size + positions[:active.size]
+            best_misfit = trial_misfit.take(pick)
+            lower = (best_misfit <= misfit).nonzero()[0]
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
-            active, observed, segment = active[lower], observed[:, lower], segment[lower]
-            current = np.array([trial, g_trial, s_trial, c_trial])[:, best[lower], within[lower]]
+            if lower.size < active.size:
+                active, t_obs, w_obs, segment = active[lower], t_obs[lower], w_obs[lower], segment[lower]
+                pick, best_misfit = pick[lower], best_misfit[lower]
+            current = np.array([trial, g_trial, s_trial, c_trial]).reshape(4, -1).take(pick, axis=1)
             state[:, active] = current
             if active.size == 0:
                 break
+            w, g, s, c = current
+            misfit = best_misfit
         return state
 
     def _misfit(self, state, samples):
