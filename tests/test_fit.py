@@ -24,7 +24,7 @@ from torsional_contact.fitting.bootstrap import (
     unresolved_ends,
 )
 from torsional_contact.fitting.loop_model import LoopModel
-from torsional_contact.fitting.masing import torque_along, walk
+from torsional_contact.fitting.masing import torque_along, turning_torques, walk
 from torsional_contact.fitting.samples import reversal_threshold, turning_points
 from torsional_contact.fitting.skeleton import Skeleton, skeleton_of
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
@@ -162,6 +162,35 @@ def test_twist_driven_memory_rules_match_the_torque_driven_ones(seed):
     bound = 2 * reversal.size * SKELETON_BOUND
     assert_close(torque / slip_torque, path, "2 M skeleton errors", atol=bound)
     assert_close(turning / slip_torque, path[reversal[:-1]], "2 M skeleton errors", atol=bound)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_turning_point_gradient_against_its_row_by_row_recurrence(seed):
+    """The gradient of the turning-point torques (``masing.turning_torques``, on Python floats) is bit for bit the
+    recurrence on the rows of an array: the row of its origin, plus d g dF/dparams, plus F' at its own twist, minus
+    F' at its origin's (theta_0's column on the virgin curve); the torques those of the evaluation without it."""
+    rng = np.random.default_rng(seed)
+    branch = loop_model._branches(Skeleton(0.3), 1.5, 4e-4)["jacobian"]
+    targets = np.concatenate([rng.uniform(-1.2e-3, 1.2e-3, 15), [0.0]])
+    path = walk(targets)
+    got = turning_torques(path, branch, True)
+    n = targets.size - 1
+    last = path.first[:n] + path.count[:n] - 1
+    o = path.origin[last]
+    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
+    gain = path.g[last] * path.direction[last]
+    value, slope, derivatives = branch(path.direction[last] * (path.targets[:n] - u_origin) / path.g[last])
+    q = derivatives.shape[1]
+    expected = np.zeros((n, q + 1 + n))
+    for j in range(n):
+        row = expected[o[j]].copy() if o[j] >= 0 else np.zeros(q + 1 + n)
+        row[:q] += gain[j] * derivatives[j]
+        row[q + 1 + j] += slope[j]
+        row[q + 1 + o[j] if o[j] >= 0 else q] -= slope[j]
+        expected[j] = row
+    assert (o >= 0).sum() >= 5, "the walk must chain turning points on earlier ones"
+    assert np.array_equal(got.gradient, expected)
+    assert np.array_equal(got.torque, turning_torques(path, branch).torque)
 
 
 def _noisy_record(rig_kind: str, seed: int):

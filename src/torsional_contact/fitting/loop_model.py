@@ -115,6 +115,7 @@ class LoopModel:
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
         self._columns = np.arange(self.twist.size)
+        self._jac_twist = None  # ``_twist_rows``
 
     @property
     def size(self) -> int:
@@ -129,7 +130,7 @@ class LoopModel:
         if self._curve[0] != key:
             slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
             skeleton = skeleton_of(kappa)
-            path = walk(np.append(p[4:], self.end) - offset)
+            path = walk(np.concatenate((p[4:], [self.end])) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
             # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until
             # a Jacobian is asked for
@@ -302,16 +303,25 @@ class LoopModel:
             scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
         d = (self.torque - torque - slope * (self.twist - u)) / scale
         turning = self._curve_of(p, jacobian)[1]
-        m = self.reversals.size
         reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
         reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
         residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
         if not jacobian:
             return residual
-        jac_twist = np.zeros((m, len(p)))
-        jac_twist[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
-        return residual, np.vstack([-out[3][self._free] / scale[self._free, None],
-                                    -turning.gradient / self.torque_noise, jac_twist])
+        return residual, np.concatenate([-out[3][self._free] / scale[self._free, None],
+                                         -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
+
+    def _twist_rows(self, size: int) -> np.ndarray:
+        """The Jacobian's rows of the reversals' twist residuals for ``size`` parameters (kept for the model's size)."""
+        if size == self.size and self._jac_twist is not None:
+            return self._jac_twist
+        m = self.reversals.size
+        rows = np.zeros((m, size))
+        rows[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
+        rows.flags.writeable = False
+        if size == self.size:
+            self._jac_twist = rows
+        return rows
 
     def sample_distances(self, p) -> np.ndarray:
         """The signed distance d_i of every sample from the curve, the reversals' included (their own foot points)."""
@@ -350,7 +360,7 @@ def _branches(skeleton: Skeleton, slip_torque: float, compliance: float) -> dict
         t, slope, omega = skeleton(x, rotation=True)
         with np.errstate(invalid="ignore"):
             d_kappa = np.where(slope > 0, -slip_torque * omega * slope, 0.0)
-        grad = np.column_stack([t - slope * x, d_kappa, -slip_torque * slope * x / compliance])
+        grad = np.array([t - slope * x, d_kappa, -slip_torque * slope * x / compliance]).T  # the columns
         return slip_torque * t, slope / compliance, grad
 
     return {"value": value, "curvature": curvature, "jacobian": jacobian}

@@ -117,16 +117,21 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     turning = np.array(turning_list, dtype=float)
     if not jacobian:
         return Turning(turning, None)
-    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
+    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve;
+    # on Python floats, row by row (the same IEEE operations as on the rows of an array)
     q = at_turning[2].shape[1]
     columns = q + 1 + n_turning
-    grad_turning = np.zeros((n_turning, columns))
-    for j in range(n_turning):
-        row = grad_turning[o[j]].copy() if o[j] >= 0 else np.zeros(columns)
-        row[:q] += gain[j] * at_turning[2][j]
-        row[q + 1 + j] += at_turning[1][j]
-        row[q + 1 + o[j] if o[j] >= 0 else q] -= at_turning[1][j]
-        grad_turning[j] = row
+    gains, slopes, derivatives = gain.tolist(), at_turning[1].tolist(), at_turning[2].tolist()
+    rows = []
+    for j, origin_j in enumerate(o.tolist()):
+        row = list(rows[origin_j]) if origin_j >= 0 else [0.0] * columns
+        gain_j, derivative = gains[j], derivatives[j]
+        for k in range(q):
+            row[k] += gain_j * derivative[k]
+        row[q + 1 + j] += slopes[j]
+        row[q + 1 + origin_j if origin_j >= 0 else q] -= slopes[j]
+        rows.append(row)
+    grad_turning = np.array(rows, dtype=float).reshape(n_turning, columns)
     return Turning(turning, grad_turning)
 
 
@@ -154,7 +159,7 @@ def pieces(path: Walk, turning: Turning) -> Pieces:
     where = np.maximum(path.origin, 0)
     origin_twist = np.where(known, path.targets[where], 0.0)
     origin_torque = np.where(known, turning.torque[where], 0.0) if path.targets.size > 1 else np.zeros(known.size)
-    table = np.vstack([origin_twist, origin_torque, path.direction / path.g, path.direction * path.g])
+    table = np.array([origin_twist, origin_torque, path.direction / path.g, path.direction * path.g])
     heading = path.direction[path.first]
     thresholds = tuple(np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
                                 np.inf) for m in range(int(path.count.max()) - 1))

@@ -106,7 +106,7 @@ class Skeleton:
         t, omega, slope, t_steps = _padded_nodes()
         x = t + self.kappa * omega
         x[0] = 0.0
-        h = np.diff(x)
+        h = x[1:] - x[:-1]  # np.diff(x)
         if not (h[1:] > 0).all():  # keep strictly increasing abscissae (every node but where x rounds flat)
             keep = np.concatenate([[True, True], np.diff(np.maximum.accumulate(x[1:])) > 0])
             t, omega, slope, x = t[keep], omega[keep], slope[keep], x[keep]
@@ -125,7 +125,7 @@ class Skeleton:
         # one row per quantity, one column per piece: the left node x_j, c0 .. c3 of T* and 2 c2 (exact), so that one
         # gather fetches everything a point needs; a point's piece is the number of inner nodes x_1 .. x_{n-2} at or
         # below |x| (the last piece continues beyond the last node)
-        self._table = np.vstack([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
+        self._table = np.array([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
         self._right = self._x[1:]  # the inner nodes x_1 .. x_{n-2} and the last one
         self._pieces = self._table.shape[1]
         self._last = float(self._x[-1])
@@ -134,7 +134,7 @@ class Skeleton:
         """(c0, c1, c2, c3) of the cubic Hermite pieces of ``value`` with ``slope`` at the nodes (``steps``: the
         differences of ``value`` if known)."""
         h = self._h
-        secant = (np.diff(value) if steps is None else steps) / h
+        secant = (value[1:] - value[:-1] if steps is None else steps) / h  # np.diff(value) if not known
         c2 = (3.0 * secant - 2.0 * slope[:-1] - slope[1:]) / h
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
