@@ -24,7 +24,7 @@ from torsional_contact.fitting.bootstrap import (
     unresolved_ends,
 )
 from torsional_contact.fitting.loop_model import LoopModel
-from torsional_contact.fitting.masing import torque_along, turning_torques, walk
+from torsional_contact.fitting.masing import jacobian_along, torque_along, turning_torques, walk
 from torsional_contact.fitting.samples import reversal_threshold, turning_points
 from torsional_contact.fitting.skeleton import Skeleton, skeleton_of
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
@@ -286,6 +286,30 @@ def test_curve_on_a_grid_of_twists_per_sample_matches_one_sample_at_a_time():
         alone = model.torque_at(p, grid[:, i], index=np.full(grid.shape[0], i), curvature=True)
         for k in (0, 1, 3):
             assert np.array_equal(broadcast[k][:, i], alone[k])
+
+
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_jacobian_with_the_turning_points_in_one_evaluation_matches_two(rig_kind):
+    """``masing.jacobian_along`` given the turning torques without their gradient evaluates F at the turning points
+    and the samples at once: bit for bit what ``torque_along`` gives with the gradient from ``turning_torques``
+    apart, and that gradient and those torques; also with points beyond the skeleton's last node among them."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, 5)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    path, turning, branches, offset, lookup = model._curve_of(p)
+    assert turning.gradient is None
+    apart = turning_torques(path, branches["jacobian"], True)
+    far = np.array([p[2] * p[0] * model.end * 1e6])  # past the last node of the skeleton
+    for u in (model.foot_points(p) - offset, np.concatenate([twist - offset, far])):
+        segment = np.minimum(np.arange(u.size), model.segment.size - 1)
+        segment = model.segment[segment]
+        expected = torque_along(path, u, segment, branches["jacobian"], True, turning=apart, lookup=lookup)
+        got_torque, got_slope, got_turning, got_jac = jacobian_along(path, u, segment, branches["jacobian"], turning,
+                                                                     lookup)
+        for got, want in ((got_torque, expected[0]), (got_slope, expected[1]), (got_turning.torque, apart.torque),
+                          (got_turning.gradient, apart.gradient), (got_jac, expected[3])):
+            assert np.array_equal(got, want)
+        assert np.array_equal(apart.torque, turning.torque)
 
 
 @pytest.mark.parametrize("seed", seeds())

@@ -67,7 +67,7 @@ import math
 
 import numpy as np
 
-from .masing import pieces, torque_along, turning_torques, walk
+from .masing import jacobian_along, pieces, torque_along, turning_torques, walk
 from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
@@ -147,8 +147,16 @@ class LoopModel:
 
         ``index`` (default: every sample, in order) names the samples, hence their segments.
         """
-        path, turning, branches, offset, lookup = self._curve_of(p, jacobian)
+        curve = self._curve_of(p)
+        path, turning, branches, offset, lookup = curve
         segment = self.segment if index is None else self.segment[index]
+        if jacobian and not curvature:
+            # the turning points' gradient from the same evaluation of F as the samples' (``masing.jacobian_along``),
+            # kept with the curve
+            torque, slope, turning, jac = jacobian_along(path, np.asarray(twist, dtype=float) - offset, segment,
+                                                         branches["jacobian"], turning, lookup)
+            curve[1] = turning
+            return torque, slope, turning.torque, jac
         branch = branches["curvature" if curvature else "jacobian" if jacobian else "value"]
         return torque_along(path, np.asarray(twist, dtype=float) - offset, segment, branch, jacobian, curvature,
                             turning, lookup)

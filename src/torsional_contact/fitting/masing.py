@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along"]
+__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along", "jacobian_along"]
 
 
 @dataclass(frozen=True)
@@ -104,12 +104,23 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     gradient's columns: the skeleton's q parameters, the twist of the virgin state, the M turning
     twists.
     """
+    o, gain, v = _turning_arguments(path)
+    return _turning_from(o, gain, branch(v), jacobian)
+
+
+def _turning_arguments(path: Walk):
+    """(origin, d g, the argument d (U_j - u_origin) / g of F) of each turning point (``turning_torques``)."""
     n_turning = path.targets.size - 1
     last = path.first[:n_turning] + path.count[:n_turning] - 1
     o = path.origin[last]
     u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
     gain = path.g[last] * path.direction[last]
-    at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
+    return o, gain, path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last]
+
+
+def _turning_from(o, gain, at_turning, jacobian: bool) -> Turning:
+    """``turning_torques`` from ``_turning_arguments``' origins and gains and the branch's values at the arguments."""
+    n_turning = o.size
     increments = (gain * at_turning[0]).tolist()
     turning_list = []  # Python floats: the same IEEE additions as on the array, without its per-element overhead
     for j, origin_j in enumerate(o.tolist()):
@@ -195,20 +206,49 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
     twists (``path.targets[:M]``; the last target only bounds the last segment).
     """
-    n_turning = path.targets.size - 1
-    if turning is None or (jacobian and turning.gradient is None):
-        turning = turning_torques(path, branch, jacobian)
+    if jacobian and not curvature:
+        torque, slope, turning, jac = jacobian_along(path, u, segment, branch, turning, lookup)
+        return torque, slope, turning.torque, jac
+    if turning is None:
+        turning = turning_torques(path, branch)
         lookup = None
     if lookup is None:
         lookup = pieces(path, turning)
     piece = _piece_of(lookup, u, segment)
-    origin_twist, origin_torque, shrink, gain = np.take(lookup.table, piece, axis=1)
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
     values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
     torque = origin_torque + gain * values[0]
     if curvature:
         return torque, values[1], turning.torque, values[2] * shrink
-    if not jacobian:
-        return torque, values[1], turning.torque
+    return torque, values[1], turning.torque
+
+
+def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turning: Turning | None = None,
+                   lookup: Pieces | None = None):
+    """``torque_along`` with ``jacobian``, returning the ``Turning`` (with its gradient) in the place of its torques.
+
+    Where ``turning`` and ``lookup`` are known but not the turning points' gradient, F and its derivatives at the
+    turning points come from the same evaluation of ``branch`` as the samples' (F acts elementwise: the same numbers
+    as from two), and their torques are recomputed from it (the same numbers as ``turning``'s).
+    """
+    n_turning = path.targets.size - 1
+    joint = turning is not None and turning.gradient is None and lookup is not None
+    if turning is None or (turning.gradient is None and not joint):
+        turning = turning_torques(path, branch, True)
+        lookup = None
+    if lookup is None:
+        lookup = pieces(path, turning)
+    piece = _piece_of(lookup, u, segment)
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
+    arguments = (u - origin_twist) * shrink  # d (u - u_origin) / g
+    if joint:
+        o, turning_gain, at_turning = _turning_arguments(path)
+        values = branch(np.concatenate((at_turning, arguments)))
+        turning = _turning_from(o, turning_gain, [value[:n_turning] for value in values], True)
+        values = [value[n_turning:] for value in values]
+    else:
+        values = branch(arguments)
+    torque = origin_torque + gain * values[0]
     origin = path.origin[piece]
     known = origin >= 0
     where = np.maximum(origin, 0)
@@ -217,4 +257,4 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     jac = turning.gradient[where] * known[:, None] if n_turning else np.zeros((u.size, columns))
     jac[:, :q] += gain[:, None] * values[2]
     jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
-    return torque, values[1], turning.torque, jac
+    return torque, values[1], turning, jac
