@@ -310,6 +310,11 @@ def test_jacobian_with_the_turning_points_in_one_evaluation_matches_two(rig_kind
                           (got_turning.gradient, apart.gradient), (got_jac, expected[3])):
             assert np.array_equal(got, want)
         assert np.array_equal(apart.torque, turning.torque)
+    # the torque and slope the Jacobian's evaluation gives at the foot points are the foot points' own (``distances``
+    # keeps the residuals of a value call for the Jacobian's call at the same parameters)
+    foot, foot_torque, foot_slope = model._project(p)
+    with_jacobian = model.torque_at(p, foot, True)
+    assert np.array_equal(with_jacobian[0], foot_torque) and np.array_equal(with_jacobian[1], foot_slope)
 
 
 @pytest.mark.parametrize("seed", seeds())

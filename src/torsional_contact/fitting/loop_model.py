@@ -116,6 +116,7 @@ class LoopModel:
         self._free[self.reversals] = False
         self._columns = np.arange(self.twist.size)
         self._jac_twist = None  # ``_twist_rows``
+        self._residual = (None, None, None)  # ``distances``: (p, foot points, (residuals, their scales)) of the last p
 
     @property
     def size(self) -> int:
@@ -303,19 +304,29 @@ class LoopModel:
         sample's torque and twist residuals against the turning point (U_j, T_j):
         (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta.
         """
-        u, torque, slope = self._project(p)
-        if jacobian:
-            out = self.torque_at(p, u, True)
-            torque, slope = out[:2]
-        with np.errstate(over="ignore"):
-            scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
-        d = (self.torque - torque - slope * (self.twist - u)) / scale
-        turning = self._curve_of(p, jacobian)[1]
-        reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
-        reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
-        residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
+        foot = self._project(p)
+        u = foot[0]
+        key = np.asarray(p, dtype=float).tobytes()
+        if self._residual[0] == key and self._residual[1] is foot:
+            # the residuals of the last call (a Jacobian follows the values at the same parameters): the torque and
+            # slope at the foot points that ``torque_at`` gives with the Jacobian are the same numbers as the foot
+            # points' own (the same evaluation of F at the same twists and pieces)
+            residual, scale = self._residual[2]
+        else:
+            torque, slope = foot[1], foot[2]
+            with np.errstate(over="ignore"):
+                scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+            d = (self.torque - torque - slope * (self.twist - u)) / scale
+            turning = self._curve_of(p)[1]
+            reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
+            reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
+            residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
+            residual.flags.writeable = False  # handed out again with the Jacobian
+            self._residual = (key, foot, (residual, scale))
         if not jacobian:
             return residual
+        out = self.torque_at(p, u, True)
+        turning = self._curve_of(p, True)[1]
         return residual, np.concatenate([-out[3][self._free] / scale[self._free, None],
                                          -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
 
