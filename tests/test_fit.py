@@ -24,7 +24,7 @@ from torsional_contact.fitting.bootstrap import (
     unresolved_ends,
 )
 from torsional_contact.fitting.loop_model import LoopModel
-from torsional_contact.fitting.masing import jacobian_along, torque_along, turning_torques, walk
+from torsional_contact.fitting.masing import jacobian_along, pieces, torque_along, turning_torques, walk
 from torsional_contact.fitting.samples import reversal_threshold, turning_points
 from torsional_contact.fitting.skeleton import Skeleton, skeleton_of
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
@@ -190,7 +190,23 @@ def test_turning_point_gradient_against_its_row_by_row_recurrence(seed):
         expected[j] = row
     assert (o >= 0).sum() >= 5, "the walk must chain turning points on earlier ones"
     assert np.array_equal(got.gradient, expected)
-    assert np.array_equal(got.torque, turning_torques(path, branch).torque)
+    torque = np.zeros(n)
+    for j in range(n):
+        torque[j] = (torque[o[j]] if o[j] >= 0 else 0.0) + (gain * value)[j]
+    assert np.array_equal(got.torque, torque)
+    assert np.array_equal(turning_torques(path, branch).torque, torque)
+    # the lookup tables (formed on Python floats) against the same expressions on arrays
+    lookup = pieces(path, got)
+    known, where = path.origin >= 0, np.maximum(path.origin, 0)
+    table = np.vstack([np.where(known, path.targets[where], 0.0), np.where(known, torque[where], 0.0),
+                       path.direction / path.g, path.direction * path.g])
+    heading = path.direction[path.first]
+    thresholds = [np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
+                           np.inf) for m in range(int(path.count.max()) - 1)]
+    assert len(thresholds) >= 1, "the walk must have a segment of several pieces"
+    assert np.array_equal(lookup.table, table) and np.array_equal(lookup.heading, heading)
+    assert len(lookup.thresholds) == len(thresholds)
+    assert all(np.array_equal(a, b) for a, b in zip(lookup.thresholds, thresholds, strict=True))
 
 
 def _noisy_record(rig_kind: str, seed: int):

@@ -109,21 +109,28 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
 
 
 def _turning_arguments(path: Walk):
-    """(origin, d g, the argument d (U_j - u_origin) / g of F) of each turning point (``turning_torques``)."""
-    n_turning = path.targets.size - 1
-    last = path.first[:n_turning] + path.count[:n_turning] - 1
-    o = path.origin[last]
-    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
-    gain = path.g[last] * path.direction[last]
-    return o, gain, path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last]
+    """(origins, d g, the arguments d (U_j - u_origin) / g of F) of the turning points (``turning_torques``): lists
+    of Python floats and ints but for the arguments (the same IEEE operations as on arrays of a few elements, without
+    their per-call overhead)."""
+    targets, origin = path.targets.tolist(), path.origin.tolist()
+    g, direction = path.g.tolist(), path.direction.tolist()
+    first, count = path.first.tolist(), path.count.tolist()
+    o, gain, arguments = [], [], []
+    for j in range(len(targets) - 1):
+        last = first[j] + count[j] - 1
+        o.append(origin[last])
+        u_origin = targets[origin[last]] if origin[last] >= 0 else 0.0
+        gain.append(g[last] * direction[last])
+        arguments.append(direction[last] * (targets[j] - u_origin) / g[last])
+    return o, gain, np.array(arguments, dtype=float)
 
 
 def _turning_from(o, gain, at_turning, jacobian: bool) -> Turning:
     """``turning_torques`` from ``_turning_arguments``' origins and gains and the branch's values at the arguments."""
-    n_turning = o.size
-    increments = (gain * at_turning[0]).tolist()
+    n_turning = len(o)
+    increments = [gain_j * value for gain_j, value in zip(gain, at_turning[0].tolist(), strict=True)]
     turning_list = []  # Python floats: the same IEEE additions as on the array, without its per-element overhead
-    for j, origin_j in enumerate(o.tolist()):
+    for j, origin_j in enumerate(o):
         turning_list.append((turning_list[origin_j] if origin_j >= 0 else 0.0) + increments[j])
     turning = np.array(turning_list, dtype=float)
     if not jacobian:
@@ -132,11 +139,11 @@ def _turning_from(o, gain, at_turning, jacobian: bool) -> Turning:
     # on Python floats, row by row (the same IEEE operations as on the rows of an array)
     q = at_turning[2].shape[1]
     columns = q + 1 + n_turning
-    gains, slopes, derivatives = gain.tolist(), at_turning[1].tolist(), at_turning[2].tolist()
+    slopes, derivatives = at_turning[1].tolist(), at_turning[2].tolist()
     rows = []
-    for j, origin_j in enumerate(o.tolist()):
+    for j, origin_j in enumerate(o):
         row = list(rows[origin_j]) if origin_j >= 0 else [0.0] * columns
-        gain_j, derivative = gains[j], derivatives[j]
+        gain_j, derivative = gain[j], derivatives[j]
         for k in range(q):
             row[k] += gain_j * derivative[k]
         row[q + 1 + j] += slopes[j]
@@ -165,16 +172,21 @@ class Pieces:
 
 
 def pieces(path: Walk, turning: Turning) -> Pieces:
-    """The lookup tables of ``path`` for ``torque_along`` (``Pieces``)."""
-    known = path.origin >= 0
-    where = np.maximum(path.origin, 0)
-    origin_twist = np.where(known, path.targets[where], 0.0)
-    origin_torque = np.where(known, turning.torque[where], 0.0) if path.targets.size > 1 else np.zeros(known.size)
-    table = np.array([origin_twist, origin_torque, path.direction / path.g, path.direction * path.g])
-    heading = path.direction[path.first]
-    thresholds = tuple(np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
-                                np.inf) for m in range(int(path.count.max()) - 1))
-    return Pieces(table, path.first, heading, thresholds)
+    """The lookup tables of ``path`` for ``torque_along`` (``Pieces``), formed on Python floats (the same IEEE
+    operations as on arrays of a few elements)."""
+    targets, origin = path.targets.tolist(), path.origin.tolist()
+    direction, g, end = path.direction.tolist(), path.g.tolist(), path.end.tolist()
+    torque = turning.torque.tolist() if len(targets) > 1 else None
+    table = np.array([[targets[o] if o >= 0 else 0.0 for o in origin],
+                      [torque[o] if o >= 0 else 0.0 for o in origin] if torque is not None else [0.0] * len(origin),
+                      [d / f for d, f in zip(direction, g, strict=True)],
+                      [d * f for d, f in zip(direction, g, strict=True)]], dtype=float)
+    first, count = path.first.tolist(), path.count.tolist()
+    heading = [direction[f] for f in first]
+    thresholds = tuple(np.array([h * end[min(f + m, len(end) - 1)] if c > m + 1 else np.inf
+                                 for h, f, c in zip(heading, first, count, strict=True)], dtype=float)
+                       for m in range(max(count) - 1))
+    return Pieces(table, path.first, np.array(heading, dtype=float), thresholds)
 
 
 def _piece_of(lookup: Pieces, u, segment):
