@@ -16,7 +16,7 @@ from tolerances import EPS, assert_close, assert_sampled, assert_within, seeds
 from torsional_contact import fit_loop
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.diagnostics import AccuracyWarning, NoiseLimitedFitWarning
-from torsional_contact.fitting import loop_fit, loop_model, profile, slip_test
+from torsional_contact.fitting import loop_fit, loop_model, masing, profile, slip_test
 from torsional_contact.fitting.bootstrap import (
     bias_corrected_percentiles,
     bias_correction,
@@ -319,7 +319,19 @@ def test_jacobian_with_the_turning_points_in_one_evaluation_matches_two(rig_kind
     for u in (model.foot_points(p) - offset, np.concatenate([twist - offset, far])):
         segment = np.minimum(np.arange(u.size), model.segment.size - 1)
         segment = model.segment[segment]
-        expected = torque_along(path, u, segment, branches["jacobian"], True, turning=apart, lookup=lookup)
+        # what ``torque_along`` gave with the gradient known: one evaluation at the samples, the gradient of each
+        # sample's origin (0 on the virgin curve), the slopes in the columns of the origins' twists (theta_0's)
+        piece = masing._piece_of(lookup, u, segment)
+        origin_twist, origin_torque, shrink, gain = lookup.table[:, piece]
+        value, slope, derivatives = branches["jacobian"]((u - origin_twist) * shrink)
+        origin = path.origin[piece]
+        known, q = origin >= 0, derivatives.shape[1]
+        jac = apart.gradient[np.maximum(origin, 0)] * known[:, None]
+        jac[:, :q] += gain[:, None] * derivatives
+        jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= slope
+        expected = (origin_torque + gain * value, slope, None, jac)
+        assert np.array_equal(torque_along(path, u, segment, branches["jacobian"], True, turning=apart,
+                                           lookup=lookup)[3], jac)
         got_torque, got_slope, got_turning, got_jac = jacobian_along(path, u, segment, branches["jacobian"], turning,
                                                                      lookup)
         for got, want in ((got_torque, expected[0]), (got_slope, expected[1]), (got_turning.torque, apart.torque),

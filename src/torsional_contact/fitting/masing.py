@@ -261,12 +261,15 @@ def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turni
     else:
         values = branch(arguments)
     torque = origin_torque + gain * values[0]
-    origin = path.origin[piece]
-    known = origin >= 0
-    where = np.maximum(origin, 0)
+    # per piece (then gathered for the samples): the gradient of its origin's torque (0 on the virgin curve) and the
+    # column of its origin's twist (theta_0's on the virgin curve)
+    known = path.origin >= 0
     q = values[2].shape[1]
     columns = q + 1 + n_turning
-    jac = turning.gradient[where] * known[:, None] if n_turning else np.zeros((u.size, columns))
+    if n_turning:
+        jac = (turning.gradient[np.maximum(path.origin, 0)] * known[:, None]).take(piece, axis=0)
+    else:
+        jac = np.zeros((u.size, columns))
     jac[:, :q] += gain[:, None] * values[2]
-    jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
+    jac[np.arange(u.size), np.where(known, q + 1 + path.origin, q).take(piece)] -= values[1]
     return torque, values[1], turning, jac
