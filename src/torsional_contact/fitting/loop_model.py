@@ -67,7 +67,7 @@ import math
 
 import numpy as np
 
-from .masing import jacobian_along, pieces, torque_along, turning_torques, walk
+from .masing import curvature_along, jacobian_along, pieces, torque_along, turning_torques, walk
 from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
@@ -115,6 +115,7 @@ class LoopModel:
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
         self._columns = np.arange(self.twist.size)
+        self._observed = np.array([self.torque, self.twist])
         self._jac_twist = None  # ``_twist_rows``
         self._residual = (None, None, None)  # ``distances``: (p, foot points, (residuals, their scales)) of the last p
 
@@ -177,9 +178,7 @@ class LoopModel:
 
         def curve(twist, segment):
             """(g, dg/dtheta, d^2g/dtheta^2) at twists of any shape, ``segment`` broadcast against them."""
-            torque, slope, _, second = torque_along(path, twist - offset, segment, branch, curvature=True,
-                                                    turning=turning, lookup=lookup)
-            return torque, slope, second
+            return curvature_along(lookup, twist - offset, segment, branch)
 
         # Start from the best of a grid of twists around each sample.  The global minimum lies within
         # s_theta sqrt(misfit at the measured twist) of it (its misfit is no larger, and the twist term alone would
@@ -195,31 +194,34 @@ class LoopModel:
         grid = self.twist + FOOT_GRID[:, None] * reach
         g_grid, s_grid, c_grid = curve(grid, self.segment)
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
-        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and the
-        # misfit there (its element of ``values``); the grid point of each sample in the flattened (grid point,
-        # sample) arrays
+        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and its
+        # misfit there (``_descend``); the grid point of each sample in the flattened (grid point, sample) arrays
         pick = values.argmin(axis=0) * columns.size + columns
-        state = np.array([grid, g_grid, s_grid, c_grid]).reshape(4, -1).take(pick, axis=1)
-        state = self._descend(curve, state, columns, values.take(pick))
+        state = np.array([grid, g_grid, s_grid, c_grid, values]).reshape(5, -1).take(pick, axis=1)
+        state = self._descend(curve, state, columns)
         if lookup.thresholds:
             state = self._across_corners(curve, state, lookup, offset, reach)
         u, torque, slope = state[0], state[1], state[2]
         self._foot = (key, (u, torque, slope))
         return self._foot[1]
 
-    def _descend(self, curve, start, samples, misfit=None):
+    def _descend(self, curve, start, samples):
         """Newton's steps (``_project``) for the samples ``samples`` from their states ``start`` (rows twist, torque,
-        slope and curvature, one column per sample; ``misfit``: their squared distances if known) until none gains
-        more than ``FOOT_GAIN``: their final states."""
+        slope and curvature, and their squared distances (noise units) if known, one column per sample) until none
+        gains more than ``FOOT_GAIN``: their final states, with their squared distances."""
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         positions = np.arange(samples.size)
+        # the samples still moving: their observations (rows torque, twist), rows position in ``samples`` and segment,
+        # and states (the iteration's own copies)
+        observed = self._observed.take(samples, axis=1)
+        index = np.array([positions, self.segment[samples]])
+        if start.shape[0] == 4:
+            (t_obs, w_obs), (w, g) = observed, start[:2]
+            start = np.concatenate([start, [(t_obs - g) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2]])
         state = start.copy()
-        # the samples still moving, with their observations, segments, states and misfits (the iteration's own copies)
-        active, t_obs, w_obs, segment = positions, self.torque[samples], self.twist[samples], self.segment[samples]
-        w, g, s, c = start
-        if misfit is None:
-            misfit = (t_obs - g) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2
+        current = start
         for _ in range(FOOT_ITERATIONS):
+            (t_obs, w_obs), (w, g, s, c, misfit) = observed, current
             with np.errstate(over="ignore", invalid="ignore"):
                 torque_misfit, twist_misfit = t_obs - g, w_obs - w
                 gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
@@ -231,34 +233,28 @@ class LoopModel:
             keep = ((gain > FOOT_GAIN) & (gain != np.inf)).nonzero()[0]
             if keep.size == 0:
                 break
-            if keep.size < active.size:
-                active, t_obs, w_obs, segment = active[keep], t_obs[keep], w_obs[keep], segment[keep]
-                step, w, misfit = step[keep], w[keep], misfit[keep]
+            n = index.shape[1]
+            if keep.size < n:
+                observed, index, current, step = (observed.take(keep, axis=1), index.take(keep, axis=1),
+                                                  current.take(keep, axis=1), step.take(keep))
+                (t_obs, w_obs), (w, misfit), n = observed, current[::4], keep.size
             # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if it
             # lowers the misfit
             trial = w + _FRACTIONS_COLUMN * step
-            g_trial, s_trial, c_trial = curve(trial, segment)
+            g_trial, s_trial, c_trial = curve(trial, index[1])
             trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
             # each sample's best fraction in the flattened (fraction, sample) arrays
-            pick = trial_misfit.argmin(axis=0) * active.size + positions[:active.size]
-            best_misfit = trial_misfit.take(pick)
-            lower = (best_misfit <= misfit).nonzero()[0]
+            pick = trial_misfit.argmin(axis=0) * n + positions[:n]
+            current = np.array([trial, g_trial, s_trial, c_trial, trial_misfit]).reshape(5, -1).take(pick, axis=1)
+            lower = (current[4] <= misfit).nonzero()[0]
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
-            if lower.size < active.size:
-                active, t_obs, w_obs, segment = active[lower], t_obs[lower], w_obs[lower], segment[lower]
-                pick, best_misfit = pick[lower], best_misfit[lower]
-            current = np.array([trial, g_trial, s_trial, c_trial]).reshape(4, -1).take(pick, axis=1)
-            state[:, active] = current
-            if active.size == 0:
+            if lower.size < n:
+                observed, index, current = (observed.take(lower, axis=1), index.take(lower, axis=1),
+                                            current.take(lower, axis=1))
+            state[:, index[0]] = current
+            if lower.size == 0:
                 break
-            w, g, s, c = current
-            misfit = best_misfit
         return state
-
-    def _misfit(self, state, samples):
-        """Squared distance (noise units) of the samples ``samples`` from their states (rows twist, torque, ...)."""
-        return ((self.torque[samples] - state[1]) ** 2 / self.torque_noise**2
-                + (self.twist[samples] - state[0]) ** 2 / self.twist_noise**2)
 
     def _across_corners(self, curve, state, lookup, offset, reach):
         """The foot points, checked across the corners of the curve within each sample's reach.
@@ -268,11 +264,12 @@ class LoopModel:
         (0.04 noise levels apart, 2e-3 apart in misfit, for a sample at a reversal): Newton's steps stay in the
         basin the grid chose.  For each corner within a sample's reach, the misfit just past it on the side away from
         the foot point so far is evaluated; where it falls going away from the corner (a minimum in that piece), the
-        steps start again from there, and the lower of the two foot points is kept.
+        steps start again from there, and the lower of the two foot points is kept.  ``state``: as ``_descend``
+        returns it (its squared distances in row 4).
         """
         samples_all = self._columns
         heading = lookup.heading[self.segment]
-        best = self._misfit(state, samples_all)
+        best = state[4]  # the squared distances, updated with the states
         for threshold in lookup.thresholds:  # one piece end per segment (inf: none)
             with np.errstate(invalid="ignore"):
                 corner = threshold[self.segment] * heading + offset  # the twist of the corner
@@ -291,10 +288,8 @@ class LoopModel:
                 continue
             moved = samples[falling]
             end = self._descend(curve, np.array([twist, g, slope, second])[:, falling], moved)
-            misfit = self._misfit(end, moved)
-            improved = misfit < best[moved]
+            improved = end[4] < best[moved]
             state[:, moved[improved]] = end[:, improved]
-            best[moved[improved]] = misfit[improved]
         return state
 
     def distances(self, p, jacobian: bool = False):

@@ -28,7 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along", "jacobian_along"]
+__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along", "curvature_along",
+           "jacobian_along"]
 
 
 @dataclass(frozen=True)
@@ -226,13 +227,22 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
         lookup = None
     if lookup is None:
         lookup = pieces(path, turning)
+    if curvature:
+        torque, slope, second = curvature_along(lookup, u, segment, branch)
+        return torque, slope, turning.torque, second
     piece = _piece_of(lookup, u, segment)
     origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
     values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
-    torque = origin_torque + gain * values[0]
-    if curvature:
-        return torque, values[1], turning.torque, values[2] * shrink
-    return torque, values[1], turning.torque
+    return origin_torque + gain * values[0], values[1], turning.torque
+
+
+def curvature_along(lookup: Pieces, u, segment, branch):
+    """(torque, slope, d^2T/du^2) at twists ``u`` of samples on segments ``segment`` (any common shape):
+    ``torque_along`` with ``curvature``, ``branch`` returning (F, F', F''), for the walk's ``pieces`` ``lookup``."""
+    piece = _piece_of(lookup, u, segment)
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
+    values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
+    return origin_torque + gain * values[0], values[1], values[2] * shrink
 
 
 def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turning: Turning | None = None,
