@@ -118,6 +118,7 @@ class LoopModel:
         self._observed = np.array([self.torque, self.twist])
         self._jac_twist = None  # ``_twist_rows``
         self._residual = (None, None, None)  # ``distances``: (p, foot points, (residuals, their scales)) of the last p
+        self._jacobian = (None, None, None)  # ``distances``: (p, foot points, Jacobian) of the last Jacobian
 
     @property
     def size(self) -> int:
@@ -320,10 +321,16 @@ class LoopModel:
             self._residual = (key, foot, (residual, scale))
         if not jacobian:
             return residual
+        if self._jacobian[0] == key and self._jacobian[1] is foot:
+            # the Jacobian of the last call with one (a profile's slope at the end of the fit that computed it)
+            return residual, self._jacobian[2]
         out = self.torque_at(p, u, True)
         turning = self._curve_of(p, True)[1]
-        return residual, np.concatenate([-out[3][self._free] / scale[self._free, None],
-                                         -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
+        jac = np.concatenate([-out[3][self._free] / scale[self._free, None], -turning.gradient / self.torque_noise,
+                              self._twist_rows(len(p))])
+        jac.flags.writeable = False  # handed out again
+        self._jacobian = (key, foot, jac)
+        return residual, jac
 
     def _twist_rows(self, size: int) -> np.ndarray:
         """The Jacobian's rows of the reversals' twist residuals for ``size`` parameters (kept for the model's size)."""
