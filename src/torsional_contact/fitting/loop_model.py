@@ -114,6 +114,7 @@ class LoopModel:
         self._foot = (None, None)
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
+        self._free_index = self._free.nonzero()[0]
         self._columns = np.arange(self.twist.size)
         self._observed = np.array([self.torque, self.twist])
         self._jac_twist = None  # ``_twist_rows``
@@ -131,7 +132,7 @@ class LoopModel:
         p = np.asarray(p, dtype=float)
         key = p.tobytes()
         if self._curve[0] != key:
-            slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
+            slip_torque, kappa, compliance, offset = p[:4].tolist()
             skeleton = skeleton_of(kappa)
             path = walk(np.concatenate((p[4:], [self.end])) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
@@ -198,7 +199,7 @@ class LoopModel:
         # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and its
         # misfit there (``_descend``); the grid point of each sample in the flattened (grid point, sample) arrays
         pick = values.argmin(axis=0) * columns.size + columns
-        state = np.array([grid, g_grid, s_grid, c_grid, values]).reshape(5, -1).take(pick, axis=1)
+        state = np.array([grid.take(pick), g_grid.take(pick), s_grid.take(pick), c_grid.take(pick), values.take(pick)])
         state = self._descend(curve, state, columns)
         if lookup.thresholds:
             state = self._across_corners(curve, state, lookup, offset, reach)
@@ -268,20 +269,19 @@ class LoopModel:
         steps start again from there, and the lower of the two foot points is kept.  ``state``: as ``_descend``
         returns it (its squared distances in row 4).
         """
-        samples_all = self._columns
         heading = lookup.heading[self.segment]
         best = state[4]  # the squared distances, updated with the states
         for threshold in lookup.thresholds:  # one piece end per segment (inf: none)
             with np.errstate(invalid="ignore"):
                 corner = threshold[self.segment] * heading + offset  # the twist of the corner
-                near = np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)
-            if not near.any():
+                samples = (np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)).nonzero()[0]  # those near
+            if samples.size == 0:
                 continue
-            samples, corner, direction = samples_all[near], corner[near], heading[near]
+            corner, direction = corner.take(samples), heading.take(samples)
             # the side of the corner away from the foot point so far (the steps found the minimum on its own side)
-            side = np.where(direction * (state[0, near] - corner) > 0.0, -direction, direction)
-            twist = corner + side * 1e-6 * np.maximum(reach[near], self.twist_noise)
-            g, slope, second = curve(twist, self.segment[near])
+            side = np.where(direction * (state[0].take(samples) - corner) > 0.0, -direction, direction)
+            twist = corner + side * 1e-6 * np.maximum(reach.take(samples), self.twist_noise)
+            g, slope, second = curve(twist, self.segment.take(samples))
             # half the misfit's derivative along the twist, going away from the corner on that side
             falling = side * ((g - self.torque[samples]) * slope / self.torque_noise**2
                               + (twist - self.twist[samples]) / self.twist_noise**2) < 0.0
@@ -316,7 +316,7 @@ class LoopModel:
             turning = self._curve_of(p)[1]
             reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
             reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
-            residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
+            residual = np.concatenate([d.take(self._free_index), reversal_torque, reversal_twist])
             residual.flags.writeable = False  # handed out again with the Jacobian
             self._residual = (key, foot, (residual, scale))
         if not jacobian:
@@ -326,8 +326,9 @@ class LoopModel:
             return residual, self._jacobian[2]
         out = self.torque_at(p, u, True)
         turning = self._curve_of(p, True)[1]
-        jac = np.concatenate([-out[3][self._free] / scale[self._free, None], -turning.gradient / self.torque_noise,
-                              self._twist_rows(len(p))])
+        free = self._free_index
+        jac = np.concatenate([-out[3].take(free, axis=0) / scale.take(free)[:, None],
+                              -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
         jac.flags.writeable = False  # handed out again
         self._jacobian = (key, foot, jac)
         return residual, jac
