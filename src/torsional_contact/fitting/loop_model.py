@@ -247,7 +247,8 @@ class LoopModel:
             trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
             # each sample's best fraction in the flattened (fraction, sample) arrays
             pick = trial_misfit.argmin(axis=0) * n + positions[:n]
-            current = np.array([trial, g_trial, s_trial, c_trial, trial_misfit]).reshape(5, -1).take(pick, axis=1)
+            current = np.array([trial.take(pick), g_trial.take(pick), s_trial.take(pick), c_trial.take(pick),
+                                trial_misfit.take(pick)])
             lower = (current[4] <= misfit).nonzero()[0]
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
             if lower.size < n:
