@@ -16,7 +16,7 @@ from tolerances import EPS, assert_close, assert_sampled, assert_within, seeds
 from torsional_contact import fit_loop
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.diagnostics import AccuracyWarning, NoiseLimitedFitWarning
-from torsional_contact.fitting import loop_fit, loop_model, profile, slip_test
+from torsional_contact.fitting import loop_fit, loop_model, masing, profile, slip_test
 from torsional_contact.fitting.bootstrap import (
     bias_corrected_percentiles,
     bias_correction,
@@ -24,7 +24,7 @@ from torsional_contact.fitting.bootstrap import (
     unresolved_ends,
 )
 from torsional_contact.fitting.loop_model import LoopModel
-from torsional_contact.fitting.masing import torque_along, walk
+from torsional_contact.fitting.masing import jacobian_along, pieces, torque_along, turning_torques, walk
 from torsional_contact.fitting.samples import reversal_threshold, turning_points
 from torsional_contact.fitting.skeleton import Skeleton, skeleton_of
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
@@ -108,6 +108,37 @@ def test_skeleton_inverse_against_root_finding(kappa):
                   "exact for a quadratic: |error| / (rounding of the slopes over 2 step and of T*'')", exact=True)
 
 
+@pytest.mark.parametrize("kappa", [0.0, 0.3, loop_fit.KAPPA_MAX])
+def test_skeleton_at_and_beyond_its_last_node_against_the_clipped_evaluation(kappa):
+    """``Skeleton`` evaluates a point at or beyond its last node (or NaN) on the last piece with |x| clipped to that
+    node: bit for bit what the direct evaluation (the piece from the inner nodes, |x| clipped, T*' and T*'' set to 0
+    beyond, omega_m continued) gives, for arrays with and without such points."""
+    skeleton = Skeleton(kappa)
+    nodes = skeleton._x
+    last = nodes[-1]
+    inside = np.concatenate([np.linspace(0.0, last, 37)[:-1], nodes[:-1], nodes[1:-1] - 1e-9, [1.0, 0.999]])
+    outside = np.array([last, np.nextafter(last, np.inf), 1.5 * last, np.nan])
+    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]])):
+        a = np.abs(x)
+        j = np.searchsorted(nodes[1:-1], a, side="right")
+        c0, c1, c2, c3 = (c[j] for c in skeleton._t_coefficients)
+        dx = np.minimum(a, last) - nodes[j]
+        beyond = a > last
+        t = np.sign(x) * (c0 + dx * (c1 + dx * (c2 + dx * c3)))
+        slope = np.where(beyond, 0.0, c1 + dx * (2.0 * c2 + 3.0 * dx * c3))
+        second = np.sign(x) * np.where(beyond, 0.0, 2.0 * c2 + 6.0 * dx * c3)
+        got_t, got_slope, got_second = skeleton(x, curvature=True)
+        for got, expected in ((got_t, t), (got_slope, slope), (got_second, second)):
+            assert np.array_equal(got, expected, equal_nan=True)
+        assert np.array_equal(skeleton(x)[0], t, equal_nan=True)
+        w0, w1, w2, w3 = (c[j] for c in skeleton._power_basis(skeleton._omega, skeleton._omega_slope))
+        omega = w0 + dx * (w1 + dx * (w2 + dx * w3))
+        with np.errstate(invalid="ignore"):
+            extra = (a - last) / kappa if kappa > 0 else np.where(beyond, np.inf, 0.0)
+        omega = np.sign(x) * np.where(beyond, omega + extra, omega)
+        assert np.array_equal(skeleton(x, rotation=True)[2], omega, equal_nan=True)
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_twist_driven_memory_rules_match_the_torque_driven_ones(seed):
     """Torques from a twist history (fitting.masing) against histories.analyse_signal on the same history."""
@@ -131,6 +162,51 @@ def test_twist_driven_memory_rules_match_the_torque_driven_ones(seed):
     bound = 2 * reversal.size * SKELETON_BOUND
     assert_close(torque / slip_torque, path, "2 M skeleton errors", atol=bound)
     assert_close(turning / slip_torque, path[reversal[:-1]], "2 M skeleton errors", atol=bound)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_turning_point_gradient_against_its_row_by_row_recurrence(seed):
+    """The gradient of the turning-point torques (``masing.turning_torques``, on Python floats) is bit for bit the
+    recurrence on the rows of an array: the row of its origin, plus d g dF/dparams, plus F' at its own twist, minus
+    F' at its origin's (theta_0's column on the virgin curve); the torques those of the evaluation without it."""
+    rng = np.random.default_rng(seed)
+    branch = loop_model._branches(Skeleton(0.3), 1.5, 4e-4)["jacobian"]
+    targets = np.concatenate([rng.uniform(-1.2e-3, 1.2e-3, 15), [0.0]])
+    path = walk(targets)
+    got = turning_torques(path, branch, True)
+    n = targets.size - 1
+    last = path.first[:n] + path.count[:n] - 1
+    o = path.origin[last]
+    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
+    gain = path.g[last] * path.direction[last]
+    value, slope, derivatives = branch(path.direction[last] * (path.targets[:n] - u_origin) / path.g[last])
+    q = derivatives.shape[1]
+    expected = np.zeros((n, q + 1 + n))
+    for j in range(n):
+        row = expected[o[j]].copy() if o[j] >= 0 else np.zeros(q + 1 + n)
+        row[:q] += gain[j] * derivatives[j]
+        row[q + 1 + j] += slope[j]
+        row[q + 1 + o[j] if o[j] >= 0 else q] -= slope[j]
+        expected[j] = row
+    assert (o >= 0).sum() >= 5, "the walk must chain turning points on earlier ones"
+    assert np.array_equal(got.gradient, expected)
+    torque = np.zeros(n)
+    for j in range(n):
+        torque[j] = (torque[o[j]] if o[j] >= 0 else 0.0) + (gain * value)[j]
+    assert np.array_equal(got.torque, torque)
+    assert np.array_equal(turning_torques(path, branch).torque, torque)
+    # the lookup tables (formed on Python floats) against the same expressions on arrays
+    lookup = pieces(path, got)
+    known, where = path.origin >= 0, np.maximum(path.origin, 0)
+    table = np.vstack([np.where(known, path.targets[where], 0.0), np.where(known, torque[where], 0.0),
+                       path.direction / path.g, path.direction * path.g])
+    heading = path.direction[path.first]
+    thresholds = [np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
+                           np.inf) for m in range(int(path.count.max()) - 1)]
+    assert len(thresholds) >= 1, "the walk must have a segment of several pieces"
+    assert np.array_equal(lookup.table, table) and np.array_equal(lookup.heading, heading)
+    assert len(lookup.thresholds) == len(thresholds)
+    assert all(np.array_equal(a, b) for a, b in zip(lookup.thresholds, thresholds, strict=True))
 
 
 def _noisy_record(rig_kind: str, seed: int):
@@ -226,6 +302,47 @@ def test_curve_on_a_grid_of_twists_per_sample_matches_one_sample_at_a_time():
         alone = model.torque_at(p, grid[:, i], index=np.full(grid.shape[0], i), curvature=True)
         for k in (0, 1, 3):
             assert np.array_equal(broadcast[k][:, i], alone[k])
+
+
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_jacobian_with_the_turning_points_in_one_evaluation_matches_two(rig_kind):
+    """``masing.jacobian_along`` given the turning torques without their gradient evaluates F at the turning points
+    and the samples at once: bit for bit what ``torque_along`` gives with the gradient from ``turning_torques``
+    apart, and that gradient and those torques; also with points beyond the skeleton's last node among them."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, 5)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    path, turning, branches, offset, lookup = model._curve_of(p)
+    assert turning.gradient is None
+    apart = turning_torques(path, branches["jacobian"], True)
+    far = np.array([p[2] * p[0] * model.end * 1e6])  # past the last node of the skeleton
+    for u in (model.foot_points(p) - offset, np.concatenate([twist - offset, far])):
+        segment = np.minimum(np.arange(u.size), model.segment.size - 1)
+        segment = model.segment[segment]
+        # what ``torque_along`` gave with the gradient known: one evaluation at the samples, the gradient of each
+        # sample's origin (0 on the virgin curve), the slopes in the columns of the origins' twists (theta_0's)
+        piece = masing._piece_of(lookup, u, segment)
+        origin_twist, origin_torque, shrink, gain = lookup.table[:, piece]
+        value, slope, derivatives = branches["jacobian"]((u - origin_twist) * shrink)
+        origin = path.origin[piece]
+        known, q = origin >= 0, derivatives.shape[1]
+        jac = apart.gradient[np.maximum(origin, 0)] * known[:, None]
+        jac[:, :q] += gain[:, None] * derivatives
+        jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= slope
+        expected = (origin_torque + gain * value, slope, None, jac)
+        assert np.array_equal(torque_along(path, u, segment, branches["jacobian"], True, turning=apart,
+                                           lookup=lookup)[3], jac)
+        got_torque, got_slope, got_turning, got_jac = jacobian_along(path, u, segment, branches["jacobian"], turning,
+                                                                     lookup)
+        for got, want in ((got_torque, expected[0]), (got_slope, expected[1]), (got_turning.torque, apart.torque),
+                          (got_turning.gradient, apart.gradient), (got_jac, expected[3])):
+            assert np.array_equal(got, want)
+        assert np.array_equal(apart.torque, turning.torque)
+    # the torque and slope the Jacobian's evaluation gives at the foot points are the foot points' own (``distances``
+    # keeps the residuals of a value call for the Jacobian's call at the same parameters)
+    foot, foot_torque, foot_slope = model._project(p)
+    with_jacobian = model.torque_at(p, foot, True)
+    assert np.array_equal(with_jacobian[0], foot_torque) and np.array_equal(with_jacobian[1], foot_slope)
 
 
 @pytest.mark.parametrize("seed", seeds())

@@ -67,7 +67,7 @@ import math
 
 import numpy as np
 
-from .masing import pieces, torque_along, turning_torques, walk
+from .masing import curvature_along, jacobian_along, pieces, torque_along, turning_torques, walk
 from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
@@ -83,6 +83,7 @@ FOOT_ITERATIONS = 12
 FOOT_GRID = np.linspace(-1.0, 1.0, 9)
 #: Fractions of a foot-point step tried at once; a sample keeps the best that lowers its distance.
 STEP_FRACTIONS = np.array([1.0, 0.5, 0.25, 1.0 / 16.0])
+_FRACTIONS_COLUMN = STEP_FRACTIONS[:, None]
 
 
 class LoopModel:
@@ -113,8 +114,12 @@ class LoopModel:
         self._foot = (None, None)
         self._free = np.ones(self.twist.size, dtype=bool)  # the samples that are not reversals
         self._free[self.reversals] = False
+        self._free_index = self._free.nonzero()[0]
         self._columns = np.arange(self.twist.size)
-        self._observed = np.stack([self.torque, self.twist])
+        self._observed = np.array([self.torque, self.twist])
+        self._jac_twist = None  # ``_twist_rows``
+        self._residual = (None, None, None)  # ``distances``: (p, foot points, (residuals, their scales)) of the last p
+        self._jacobian = (None, None, None)  # ``distances``: (p, foot points, Jacobian) of the last Jacobian
 
     @property
     def size(self) -> int:
@@ -127,9 +132,9 @@ class LoopModel:
         p = np.asarray(p, dtype=float)
         key = p.tobytes()
         if self._curve[0] != key:
-            slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
+            slip_torque, kappa, compliance, offset = p[:4].tolist()
             skeleton = skeleton_of(kappa)
-            path = walk(np.append(p[4:], self.end) - offset)
+            path = walk(np.concatenate((p[4:], [self.end])) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
             # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until
             # a Jacobian is asked for
@@ -146,8 +151,16 @@ class LoopModel:
 
         ``index`` (default: every sample, in order) names the samples, hence their segments.
         """
-        path, turning, branches, offset, lookup = self._curve_of(p, jacobian)
+        curve = self._curve_of(p)
+        path, turning, branches, offset, lookup = curve
         segment = self.segment if index is None else self.segment[index]
+        if jacobian and not curvature:
+            # the turning points' gradient from the same evaluation of F as the samples' (``masing.jacobian_along``),
+            # kept with the curve
+            torque, slope, turning, jac = jacobian_along(path, np.asarray(twist, dtype=float) - offset, segment,
+                                                         branches["jacobian"], turning, lookup)
+            curve[1] = turning
+            return torque, slope, turning.torque, jac
         branch = branches["curvature" if curvature else "jacobian" if jacobian else "value"]
         return torque_along(path, np.asarray(twist, dtype=float) - offset, segment, branch, jacobian, curvature,
                             turning, lookup)
@@ -158,7 +171,7 @@ class LoopModel:
 
     def _project(self, p):
         """(foot points, torque and slope there), cached for the last parameters."""
-        key = tuple(float(v) for v in p)
+        key = np.asarray(p, dtype=float).tolist()  # the same floats (and the same equality) as float(v) for v in p
         if self._foot[0] == key:
             return self._foot[1]
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
@@ -167,9 +180,7 @@ class LoopModel:
 
         def curve(twist, segment):
             """(g, dg/dtheta, d^2g/dtheta^2) at twists of any shape, ``segment`` broadcast against them."""
-            torque, slope, _, second = torque_along(path, twist - offset, segment, branch, curvature=True,
-                                                    turning=turning, lookup=lookup)
-            return torque, slope, second
+            return curvature_along(lookup, twist - offset, segment, branch)
 
         # Start from the best of a grid of twists around each sample.  The global minimum lies within
         # s_theta sqrt(misfit at the measured twist) of it (its misfit is no larger, and the twist term alone would
@@ -178,13 +189,17 @@ class LoopModel:
         # one often enough to make the sum of squares jump as the parameters move.  The grid is (grid point,
         # sample); every sample's column shares its segment.
         columns = self._columns
-        misfit = (self.torque - self.torque_at(p, self.twist)[0]) ** 2 / s_t2
+        measured = torque_along(path, self.twist - offset, self.segment, branches["value"], turning=turning,
+                                lookup=lookup)[0]  # ``torque_at`` at the measured twists
+        misfit = (self.torque - measured) ** 2 / s_t2
         reach = self.twist_noise * np.sqrt(misfit)
         grid = self.twist + FOOT_GRID[:, None] * reach
         g_grid, s_grid, c_grid = curve(grid, self.segment)
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
-        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far
-        state = np.array([grid, g_grid, s_grid, c_grid])[:, np.argmin(values, axis=0), columns]
+        # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and its
+        # misfit there (``_descend``); the grid point of each sample in the flattened (grid point, sample) arrays
+        pick = values.argmin(axis=0) * columns.size + columns
+        state = np.array([grid.take(pick), g_grid.take(pick), s_grid.take(pick), c_grid.take(pick), values.take(pick)])
         state = self._descend(curve, state, columns)
         if lookup.thresholds:
             state = self._across_corners(curve, state, lookup, offset, reach)
@@ -194,14 +209,21 @@ class LoopModel:
 
     def _descend(self, curve, start, samples):
         """Newton's steps (``_project``) for the samples ``samples`` from their states ``start`` (rows twist, torque,
-        slope and curvature, one column per sample) until none gains more than ``FOOT_GAIN``: their final states."""
+        slope and curvature, and their squared distances (noise units) if known, one column per sample) until none
+        gains more than ``FOOT_GAIN``: their final states, with their squared distances."""
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         positions = np.arange(samples.size)
+        # the samples still moving: their observations (rows torque, twist), rows position in ``samples`` and segment,
+        # and states (the iteration's own copies)
+        observed = self._observed.take(samples, axis=1)
+        index = np.array([positions, self.segment[samples]])
+        if start.shape[0] == 4:
+            (t_obs, w_obs), (w, g) = observed, start[:2]
+            start = np.concatenate([start, [(t_obs - g) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2]])
         state = start.copy()
-        # the samples still moving, with their observations, segments and states (the iteration's own copies)
-        active, observed, segment, current = positions, self._observed[:, samples], self.segment[samples], state.copy()
+        current = start
         for _ in range(FOOT_ITERATIONS):
-            (t_obs, w_obs), (w, g, s, c) = observed, current
+            (t_obs, w_obs), (w, g, s, c, misfit) = observed, current
             with np.errstate(over="ignore", invalid="ignore"):
                 torque_misfit, twist_misfit = t_obs - g, w_obs - w
                 gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
@@ -210,33 +232,32 @@ class LoopModel:
                 step = gradient / np.where(newton > 0.1 * gauss_newton, newton, gauss_newton)
                 gain = step * gradient  # predicted decrease of the misfit
             # no gain where it is NaN or +inf (FOOT_GAIN > 0)
-            keep = (gain > FOOT_GAIN) & (gain != np.inf)
-            active = active[keep]
-            if active.size == 0:
+            keep = ((gain > FOOT_GAIN) & (gain != np.inf)).nonzero()[0]
+            if keep.size == 0:
                 break
-            observed, segment, step, w = observed[:, keep], segment[keep], step[keep], w[keep]
-            t_obs, w_obs = observed
-            misfit = torque_misfit[keep] ** 2 / s_t2 + twist_misfit[keep] ** 2 / s_w2
+            n = index.shape[1]
+            if keep.size < n:
+                observed, index, current, step = (observed.take(keep, axis=1), index.take(keep, axis=1),
+                                                  current.take(keep, axis=1), step.take(keep))
+                (t_obs, w_obs), (w, misfit), n = observed, current[::4], keep.size
             # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if it
             # lowers the misfit
-            trial = w + STEP_FRACTIONS[:, None] * step
-            g_trial, s_trial, c_trial = curve(trial, segment)
+            trial = w + _FRACTIONS_COLUMN * step
+            g_trial, s_trial, c_trial = curve(trial, index[1])
             trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
-            best = np.argmin(trial_misfit, axis=0)
-            within = positions[:active.size]
-            lower = trial_misfit[best, within] <= misfit
+            # each sample's best fraction in the flattened (fraction, sample) arrays
+            pick = trial_misfit.argmin(axis=0) * n + positions[:n]
+            current = np.array([trial.take(pick), g_trial.take(pick), s_trial.take(pick), c_trial.take(pick),
+                                trial_misfit.take(pick)])
+            lower = (current[4] <= misfit).nonzero()[0]
             # a sample whose step cannot lower its misfit sits at its foot point (a kink)
-            active, observed, segment = active[lower], observed[:, lower], segment[lower]
-            current = np.array([trial, g_trial, s_trial, c_trial])[:, best[lower], within[lower]]
-            state[:, active] = current
-            if active.size == 0:
+            if lower.size < n:
+                observed, index, current = (observed.take(lower, axis=1), index.take(lower, axis=1),
+                                            current.take(lower, axis=1))
+            state[:, index[0]] = current
+            if lower.size == 0:
                 break
         return state
-
-    def _misfit(self, state, samples):
-        """Squared distance (noise units) of the samples ``samples`` from their states (rows twist, torque, ...)."""
-        return ((self.torque[samples] - state[1]) ** 2 / self.torque_noise**2
-                + (self.twist[samples] - state[0]) ** 2 / self.twist_noise**2)
 
     def _across_corners(self, curve, state, lookup, offset, reach):
         """The foot points, checked across the corners of the curve within each sample's reach.
@@ -246,22 +267,22 @@ class LoopModel:
         (0.04 noise levels apart, 2e-3 apart in misfit, for a sample at a reversal): Newton's steps stay in the
         basin the grid chose.  For each corner within a sample's reach, the misfit just past it on the side away from
         the foot point so far is evaluated; where it falls going away from the corner (a minimum in that piece), the
-        steps start again from there, and the lower of the two foot points is kept.
+        steps start again from there, and the lower of the two foot points is kept.  ``state``: as ``_descend``
+        returns it (its squared distances in row 4).
         """
-        samples_all = self._columns
         heading = lookup.heading[self.segment]
-        best = self._misfit(state, samples_all)
+        best = state[4]  # the squared distances, updated with the states
         for threshold in lookup.thresholds:  # one piece end per segment (inf: none)
             with np.errstate(invalid="ignore"):
                 corner = threshold[self.segment] * heading + offset  # the twist of the corner
-                near = np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)
-            if not near.any():
+                samples = (np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)).nonzero()[0]  # those near
+            if samples.size == 0:
                 continue
-            samples, corner, direction = samples_all[near], corner[near], heading[near]
+            corner, direction = corner.take(samples), heading.take(samples)
             # the side of the corner away from the foot point so far (the steps found the minimum on its own side)
-            side = np.where(direction * (state[0, near] - corner) > 0.0, -direction, direction)
-            twist = corner + side * 1e-6 * np.maximum(reach[near], self.twist_noise)
-            g, slope, second = curve(twist, self.segment[near])
+            side = np.where(direction * (state[0].take(samples) - corner) > 0.0, -direction, direction)
+            twist = corner + side * 1e-6 * np.maximum(reach.take(samples), self.twist_noise)
+            g, slope, second = curve(twist, self.segment.take(samples))
             # half the misfit's derivative along the twist, going away from the corner on that side
             falling = side * ((g - self.torque[samples]) * slope / self.torque_noise**2
                               + (twist - self.twist[samples]) / self.twist_noise**2) < 0.0
@@ -269,10 +290,8 @@ class LoopModel:
                 continue
             moved = samples[falling]
             end = self._descend(curve, np.array([twist, g, slope, second])[:, falling], moved)
-            misfit = self._misfit(end, moved)
-            improved = misfit < best[moved]
+            improved = end[4] < best[moved]
             state[:, moved[improved]] = end[:, improved]
-            best[moved[improved]] = misfit[improved]
         return state
 
     def distances(self, p, jacobian: bool = False):
@@ -282,24 +301,50 @@ class LoopModel:
         sample's torque and twist residuals against the turning point (U_j, T_j):
         (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta.
         """
-        u, torque, slope = self._project(p)
-        if jacobian:
-            out = self.torque_at(p, u, True)
-            torque, slope = out[:2]
-        with np.errstate(over="ignore"):
-            scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
-        d = (self.torque - torque - slope * (self.twist - u)) / scale
-        turning = self._curve_of(p, jacobian)[1]
-        m = self.reversals.size
-        reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
-        reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
-        residual = np.concatenate([d[self._free], reversal_torque, reversal_twist])
+        foot = self._project(p)
+        u = foot[0]
+        key = np.asarray(p, dtype=float).tobytes()
+        if self._residual[0] == key and self._residual[1] is foot:
+            # the residuals of the last call (a Jacobian follows the values at the same parameters): the torque and
+            # slope at the foot points that ``torque_at`` gives with the Jacobian are the same numbers as the foot
+            # points' own (the same evaluation of F at the same twists and pieces)
+            residual, scale = self._residual[2]
+        else:
+            torque, slope = foot[1], foot[2]
+            with np.errstate(over="ignore"):
+                scale = np.sqrt(self.torque_noise**2 + (slope * self.twist_noise) ** 2)
+            d = (self.torque - torque - slope * (self.twist - u)) / scale
+            turning = self._curve_of(p)[1]
+            reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
+            reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
+            residual = np.concatenate([d.take(self._free_index), reversal_torque, reversal_twist])
+            residual.flags.writeable = False  # handed out again with the Jacobian
+            self._residual = (key, foot, (residual, scale))
         if not jacobian:
             return residual
-        jac_twist = np.zeros((m, len(p)))
-        jac_twist[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
-        return residual, np.vstack([-out[3][self._free] / scale[self._free, None],
-                                    -turning.gradient / self.torque_noise, jac_twist])
+        if self._jacobian[0] == key and self._jacobian[1] is foot:
+            # the Jacobian of the last call with one (a profile's slope at the end of the fit that computed it)
+            return residual, self._jacobian[2]
+        out = self.torque_at(p, u, True)
+        turning = self._curve_of(p, True)[1]
+        free = self._free_index
+        jac = np.concatenate([-out[3].take(free, axis=0) / scale.take(free)[:, None],
+                              -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
+        jac.flags.writeable = False  # handed out again
+        self._jacobian = (key, foot, jac)
+        return residual, jac
+
+    def _twist_rows(self, size: int) -> np.ndarray:
+        """The Jacobian's rows of the reversals' twist residuals for ``size`` parameters (kept for the model's size)."""
+        if size == self.size and self._jac_twist is not None:
+            return self._jac_twist
+        m = self.reversals.size
+        rows = np.zeros((m, size))
+        rows[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
+        rows.flags.writeable = False
+        if size == self.size:
+            self._jac_twist = rows
+        return rows
 
     def sample_distances(self, p) -> np.ndarray:
         """The signed distance d_i of every sample from the curve, the reversals' included (their own foot points)."""
@@ -338,7 +383,7 @@ def _branches(skeleton: Skeleton, slip_torque: float, compliance: float) -> dict
         t, slope, omega = skeleton(x, rotation=True)
         with np.errstate(invalid="ignore"):
             d_kappa = np.where(slope > 0, -slip_torque * omega * slope, 0.0)
-        grad = np.column_stack([t - slope * x, d_kappa, -slip_torque * slope * x / compliance])
+        grad = np.array([t - slope * x, d_kappa, -slip_torque * slope * x / compliance]).T  # the columns
         return slip_torque * t, slope / compliance, grad
 
     return {"value": value, "curvature": curvature, "jacobian": jacobian}

@@ -28,7 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along"]
+__all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along", "curvature_along",
+           "jacobian_along"]
 
 
 @dataclass(frozen=True)
@@ -104,29 +105,52 @@ def turning_torques(path: Walk, branch, jacobian: bool = False) -> Turning:
     gradient's columns: the skeleton's q parameters, the twist of the virgin state, the M turning
     twists.
     """
-    n_turning = path.targets.size - 1
-    last = path.first[:n_turning] + path.count[:n_turning] - 1
-    o = path.origin[last]
-    u_origin = np.where(o >= 0, path.targets[np.maximum(o, 0)], 0.0)
-    gain = path.g[last] * path.direction[last]
-    at_turning = branch(path.direction[last] * (path.targets[:n_turning] - u_origin) / path.g[last])
-    increments = (gain * at_turning[0]).tolist()
+    o, gain, v = _turning_arguments(path)
+    return _turning_from(o, gain, branch(v), jacobian)
+
+
+def _turning_arguments(path: Walk):
+    """(origins, d g, the arguments d (U_j - u_origin) / g of F) of the turning points (``turning_torques``): lists
+    of Python floats and ints but for the arguments (the same IEEE operations as on arrays of a few elements, without
+    their per-call overhead)."""
+    targets, origin = path.targets.tolist(), path.origin.tolist()
+    g, direction = path.g.tolist(), path.direction.tolist()
+    first, count = path.first.tolist(), path.count.tolist()
+    o, gain, arguments = [], [], []
+    for j in range(len(targets) - 1):
+        last = first[j] + count[j] - 1
+        o.append(origin[last])
+        u_origin = targets[origin[last]] if origin[last] >= 0 else 0.0
+        gain.append(g[last] * direction[last])
+        arguments.append(direction[last] * (targets[j] - u_origin) / g[last])
+    return o, gain, np.array(arguments, dtype=float)
+
+
+def _turning_from(o, gain, at_turning, jacobian: bool) -> Turning:
+    """``turning_torques`` from ``_turning_arguments``' origins and gains and the branch's values at the arguments."""
+    n_turning = len(o)
+    increments = [gain_j * value for gain_j, value in zip(gain, at_turning[0].tolist(), strict=True)]
     turning_list = []  # Python floats: the same IEEE additions as on the array, without its per-element overhead
-    for j, origin_j in enumerate(o.tolist()):
+    for j, origin_j in enumerate(o):
         turning_list.append((turning_list[origin_j] if origin_j >= 0 else 0.0) + increments[j])
     turning = np.array(turning_list, dtype=float)
     if not jacobian:
         return Turning(turning, None)
-    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve
+    # d T_j = d T(origin) + d g dF/dparams + F'(v_j) (dU_j - dU_origin), with U_origin = theta_0 on the virgin curve;
+    # on Python floats, row by row (the same IEEE operations as on the rows of an array)
     q = at_turning[2].shape[1]
     columns = q + 1 + n_turning
-    grad_turning = np.zeros((n_turning, columns))
-    for j in range(n_turning):
-        row = grad_turning[o[j]].copy() if o[j] >= 0 else np.zeros(columns)
-        row[:q] += gain[j] * at_turning[2][j]
-        row[q + 1 + j] += at_turning[1][j]
-        row[q + 1 + o[j] if o[j] >= 0 else q] -= at_turning[1][j]
-        grad_turning[j] = row
+    slopes, derivatives = at_turning[1].tolist(), at_turning[2].tolist()
+    rows = []
+    for j, origin_j in enumerate(o):
+        row = list(rows[origin_j]) if origin_j >= 0 else [0.0] * columns
+        gain_j, derivative = gain[j], derivatives[j]
+        for k in range(q):
+            row[k] += gain_j * derivative[k]
+        row[q + 1 + j] += slopes[j]
+        row[q + 1 + origin_j if origin_j >= 0 else q] -= slopes[j]
+        rows.append(row)
+    grad_turning = np.array(rows, dtype=float).reshape(n_turning, columns)
     return Turning(turning, grad_turning)
 
 
@@ -149,16 +173,21 @@ class Pieces:
 
 
 def pieces(path: Walk, turning: Turning) -> Pieces:
-    """The lookup tables of ``path`` for ``torque_along`` (``Pieces``)."""
-    known = path.origin >= 0
-    where = np.maximum(path.origin, 0)
-    origin_twist = np.where(known, path.targets[where], 0.0)
-    origin_torque = np.where(known, turning.torque[where], 0.0) if path.targets.size > 1 else np.zeros(known.size)
-    table = np.vstack([origin_twist, origin_torque, path.direction / path.g, path.direction * path.g])
-    heading = path.direction[path.first]
-    thresholds = tuple(np.where(path.count > m + 1, heading * path.end[np.minimum(path.first + m, path.end.size - 1)],
-                                np.inf) for m in range(int(path.count.max()) - 1))
-    return Pieces(table, path.first, heading, thresholds)
+    """The lookup tables of ``path`` for ``torque_along`` (``Pieces``), formed on Python floats (the same IEEE
+    operations as on arrays of a few elements)."""
+    targets, origin = path.targets.tolist(), path.origin.tolist()
+    direction, g, end = path.direction.tolist(), path.g.tolist(), path.end.tolist()
+    torque = turning.torque.tolist() if len(targets) > 1 else None
+    table = np.array([[targets[o] if o >= 0 else 0.0 for o in origin],
+                      [torque[o] if o >= 0 else 0.0 for o in origin] if torque is not None else [0.0] * len(origin),
+                      [d / f for d, f in zip(direction, g, strict=True)],
+                      [d * f for d, f in zip(direction, g, strict=True)]], dtype=float)
+    first, count = path.first.tolist(), path.count.tolist()
+    heading = [direction[f] for f in first]
+    thresholds = tuple(np.array([h * end[min(f + m, len(end) - 1)] if c > m + 1 else np.inf
+                                 for h, f, c in zip(heading, first, count, strict=True)], dtype=float)
+                       for m in range(max(count) - 1))
+    return Pieces(table, path.first, np.array(heading, dtype=float), thresholds)
 
 
 def _piece_of(lookup: Pieces, u, segment):
@@ -190,26 +219,67 @@ def torque_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, jacobia
     the virgin state (which moves the virgin curve: u = theta - theta_0) and the M turning-point
     twists (``path.targets[:M]``; the last target only bounds the last segment).
     """
+    if jacobian and not curvature:
+        torque, slope, turning, jac = jacobian_along(path, u, segment, branch, turning, lookup)
+        return torque, slope, turning.torque, jac
+    if turning is None:
+        turning = turning_torques(path, branch)
+        lookup = None
+    if lookup is None:
+        lookup = pieces(path, turning)
+    if curvature:
+        torque, slope, second = curvature_along(lookup, u, segment, branch)
+        return torque, slope, turning.torque, second
+    piece = _piece_of(lookup, u, segment)
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
+    values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
+    return origin_torque + gain * values[0], values[1], turning.torque
+
+
+def curvature_along(lookup: Pieces, u, segment, branch):
+    """(torque, slope, d^2T/du^2) at twists ``u`` of samples on segments ``segment`` (any common shape):
+    ``torque_along`` with ``curvature``, ``branch`` returning (F, F', F''), for the walk's ``pieces`` ``lookup``."""
+    piece = _piece_of(lookup, u, segment)
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
+    values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
+    return origin_torque + gain * values[0], values[1], values[2] * shrink
+
+
+def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turning: Turning | None = None,
+                   lookup: Pieces | None = None):
+    """``torque_along`` with ``jacobian``, returning the ``Turning`` (with its gradient) in the place of its torques.
+
+    Where ``turning`` and ``lookup`` are known but not the turning points' gradient, F and its derivatives at the
+    turning points come from the same evaluation of ``branch`` as the samples' (F acts elementwise: the same numbers
+    as from two), and their torques are recomputed from it (the same numbers as ``turning``'s).
+    """
     n_turning = path.targets.size - 1
-    if turning is None or (jacobian and turning.gradient is None):
-        turning = turning_torques(path, branch, jacobian)
+    joint = turning is not None and turning.gradient is None and lookup is not None
+    if turning is None or (turning.gradient is None and not joint):
+        turning = turning_torques(path, branch, True)
         lookup = None
     if lookup is None:
         lookup = pieces(path, turning)
     piece = _piece_of(lookup, u, segment)
-    origin_twist, origin_torque, shrink, gain = np.take(lookup.table, piece, axis=1)
-    values = branch((u - origin_twist) * shrink)  # d (u - u_origin) / g
+    origin_twist, origin_torque, shrink, gain = lookup.table.take(piece, axis=1)
+    arguments = (u - origin_twist) * shrink  # d (u - u_origin) / g
+    if joint:
+        o, turning_gain, at_turning = _turning_arguments(path)
+        values = branch(np.concatenate((at_turning, arguments)))
+        turning = _turning_from(o, turning_gain, [value[:n_turning] for value in values], True)
+        values = [value[n_turning:] for value in values]
+    else:
+        values = branch(arguments)
     torque = origin_torque + gain * values[0]
-    if curvature:
-        return torque, values[1], turning.torque, values[2] * shrink
-    if not jacobian:
-        return torque, values[1], turning.torque
-    origin = path.origin[piece]
-    known = origin >= 0
-    where = np.maximum(origin, 0)
+    # per piece (then gathered for the samples): the gradient of its origin's torque (0 on the virgin curve) and the
+    # column of its origin's twist (theta_0's on the virgin curve)
+    known = path.origin >= 0
     q = values[2].shape[1]
     columns = q + 1 + n_turning
-    jac = turning.gradient[where] * known[:, None] if n_turning else np.zeros((u.size, columns))
+    if n_turning:
+        jac = (turning.gradient[np.maximum(path.origin, 0)] * known[:, None]).take(piece, axis=0)
+    else:
+        jac = np.zeros((u.size, columns))
     jac[:, :q] += gain[:, None] * values[2]
-    jac[np.arange(u.size), np.where(known, q + 1 + origin, q)] -= values[1]
-    return torque, values[1], turning.torque, jac
+    jac[np.arange(u.size), np.where(known, q + 1 + path.origin, q).take(piece)] -= values[1]
+    return torque, values[1], turning, jac

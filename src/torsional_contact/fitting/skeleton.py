@@ -106,7 +106,7 @@ class Skeleton:
         t, omega, slope, t_steps = _padded_nodes()
         x = t + self.kappa * omega
         x[0] = 0.0
-        h = np.diff(x)
+        h = x[1:] - x[:-1]  # np.diff(x)
         if not (h[1:] > 0).all():  # keep strictly increasing abscissae (every node but where x rounds flat)
             keep = np.concatenate([[True, True], np.diff(np.maximum.accumulate(x[1:])) > 0])
             t, omega, slope, x = t[keep], omega[keep], slope[keep], x[keep]
@@ -125,15 +125,16 @@ class Skeleton:
         # one row per quantity, one column per piece: the left node x_j, c0 .. c3 of T* and 2 c2 (exact), so that one
         # gather fetches everything a point needs; a point's piece is the number of inner nodes x_1 .. x_{n-2} at or
         # below |x| (the last piece continues beyond the last node)
-        self._table = np.vstack([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
-        self._inner = self._x[1:-1]
+        self._table = np.array([self._x[:-1], *self._t_coefficients, 2.0 * self._t_coefficients[2]])
+        self._right = self._x[1:]  # the inner nodes x_1 .. x_{n-2} and the last one
+        self._pieces = self._table.shape[1]
         self._last = float(self._x[-1])
 
     def _power_basis(self, value, slope, steps=None):
         """(c0, c1, c2, c3) of the cubic Hermite pieces of ``value`` with ``slope`` at the nodes (``steps``: the
         differences of ``value`` if known)."""
         h = self._h
-        secant = (np.diff(value) if steps is None else steps) / h
+        secant = (value[1:] - value[:-1] if steps is None else steps) / h  # np.diff(value) if not known
         c2 = (3.0 * secant - 2.0 * slope[:-1] - slope[1:]) / h
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
@@ -147,13 +148,22 @@ class Skeleton:
         """
         x = np.asarray(x, dtype=float)
         a = np.abs(x)
-        last = self._last
-        j = np.searchsorted(self._inner, a, side="right")  # the piece: min(last node index, pieces - 1)
-        nodes, c0, c1, c2, c3, c2_twice = np.take(self._table, j, axis=1)
-        dx = np.minimum(a, last) - nodes
+        # the number of nodes x_1 .. x_{n-1} at or below |x|: the piece where it is below the pieces' count (then no
+        # point lies at or beyond the last node, nor is NaN), else one more than the last piece for a point at or
+        # beyond the last node (and NaN)
+        j = self._right.searchsorted(a, side="right")
+        is_last = int(j.max(initial=0)) > self._pieces - 1
+        if is_last:
+            last = self._last
+            j = np.minimum(j, self._pieces - 1)  # the piece: min(last node index, pieces - 1)
+        nodes, c0, c1, c2, c3, c2_twice = self._table.take(j, axis=1)
+        dx = np.minimum(a, last) - nodes if is_last else a - nodes
         t = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        beyond = a > last
-        is_beyond = bool(beyond.any())
+        if is_last:
+            beyond = a > last
+            is_beyond = bool(beyond.any())
+        else:
+            is_beyond = False
         # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
         slope = c1 + dx * (c2_twice + 3.0 * dx * c3)
         if is_beyond:
@@ -167,10 +177,10 @@ class Skeleton:
         if not rotation:
             return sign * t, slope
         if self._omega_table is None:
-            self._omega_table = np.vstack(self._power_basis(self._omega, self._omega_slope))
-        c0, c1, c2, c3 = np.take(self._omega_table, j, axis=1)
+            self._omega_table = np.array(self._power_basis(self._omega, self._omega_slope))
+        c0, c1, c2, c3 = self._omega_table.take(j, axis=1)
         omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
         if is_beyond:
-            extra = (a - last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
+            extra = (a - self._last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)
         return sign * t, slope, sign * omega
