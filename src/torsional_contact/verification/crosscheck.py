@@ -125,31 +125,23 @@ def _factor_solves(lu, border=None, scale=None):
     def upper(x, trans):
         return linalg.solve_triangular(lu, x, lower=False, trans=trans, check_finite=False)
 
-    def solve(x):
+    def apply(x, trans):
+        """B x (trans 0) or B^T x (trans 1): the triangular factors in the order of that product, the scalings
+        swapped and the border's row and column exchanged for the transpose."""
+        first, second = (lower, upper) if trans == 0 else (upper, lower)
         if scale is not None:
-            x = x / scale[0]
+            x = x / scale[trans]
         if border is None:
-            y = upper(lower(x, 0), 0)
+            y = second(first(x, trans), trans)
         else:
             u, l_row, pivot = border
-            z = lower(x[:n], 0)
-            last = (x[n] - l_row @ z) / pivot
-            y = np.append(upper(z - u * last, 0), last)
-        return y if scale is None else y / scale[1]
+            inner, outer = (l_row, u) if trans == 0 else (u, l_row)
+            z = first(x[:n], trans)
+            last = (x[n] - inner @ z) / pivot
+            y = np.append(second(z - outer * last, trans), last)
+        return y if scale is None else y / scale[1 - trans]
 
-    def solve_t(x):
-        if scale is not None:
-            x = x / scale[1]
-        if border is None:
-            y = lower(upper(x, 1), 1)
-        else:
-            u, l_row, pivot = border
-            z = upper(x[:n], 1)
-            last = (x[n] - u @ z) / pivot
-            y = np.append(lower(z - l_row * last, 1), last)
-        return y if scale is None else y / scale[0]
-
-    return solve, solve_t
+    return (lambda x: apply(x, 0)), (lambda x: apply(x, 1))
 
 
 #: Iterations of LAPACK's 1-norm estimator (dlacn2's ITMAX).
