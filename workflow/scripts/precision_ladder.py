@@ -274,7 +274,12 @@ def main():
     digits = refs[0]["digits"]
     convergence = convergence_rows(refs)
     double = double_fast_rows(refs)
-    weak = weak_form_rows(refs, a.weak_radii, a.weak_n_terms, solved_elsewhere(a.converged))
+    try:
+        known = solved_elsewhere(a.converged)
+    except (OSError, ValueError, KeyError, TypeError) as error:  # before any output is written
+        p.error(f"--converged {a.converged}: not a JSON of precision_crosscheck.py --converged-json "
+                f"({type(error).__name__}: {error})")
+    weak = weak_form_rows(refs, a.weak_radii, a.weak_n_terms, known)
     extrapolated = extrapolated_rows(refs, weak, a.weak_radii)
     ladder = ladder_rows(refs, a.weak_radii, double, a.weak_digits, weak_references(a.weak_references))
     summary = {key: worst(double, key) for key in ("torque_error", "rigid_rotation_error", "traction_error",
