@@ -133,23 +133,22 @@ def with_bootstrap(estimate: Estimate, interval, factor: float, bias: float) -> 
 def unresolved_note(boot: dict, count: int) -> str:
     """What the message says of bootstrap ends at levels ``count`` refits do not resolve ("" if none)."""
     flipped = {"lower": "upper", "upper": "lower"}
-    ends, needed = [], []
+    ends, needed, total = [], [], 0
     for key, symbol in (("slip_torque", "f"), ("product", "G"), ("compliance", "C")):
         item = boot[key]
         names = sorted(flipped[e] if key == "product" else e for e in item.unresolved)
-        if names:
-            bias = -item.bias if key == "product" else item.bias  # G's own z_0 (``Estimate.bootstrap_bias``)
-            ends.append(f"the {' and '.join(names)} end{'s' if len(names) > 1 else ''} of {symbol} "
-                        f"(z_0 = {bias:.2f})")
-            count_ends = len(names)
-            if item.refits_needed is not None:
-                needed.append(item.refits_needed)
-            ends[-1] = (ends[-1], count_ends)
+        if not names:
+            continue
+        bias = -item.bias if key == "product" else item.bias  # G's own z_0 (``Estimate.bootstrap_bias``)
+        ends.append(f"the {' and '.join(names)} end{'s' if len(names) > 1 else ''} of {symbol} (z_0 = {bias:.2f})")
+        total += len(names)
+        if item.refits_needed is not None:
+            needed.append(item.refits_needed)
     if not ends:
         return ""
-    several = sum(n for _, n in ends) > 1
+    several = total > 1
     more = f"; about {max(needed)} refits resolve {'them' if several else 'it'}" if needed else ""
-    return (f"bootstrap: the bias-corrected level{'s' if several else ''} of {' and '.join(t for t, _ in ends)} "
+    return (f"bootstrap: the bias-corrected level{'s' if several else ''} of {' and '.join(ends)} "
             f"lie{'' if several else 's'} beyond what {count} refits resolve (1/{count + 1} from either side): "
             f"{'such an end is' if several else 'that end is'} the extreme refit, and the bootstrap interval too "
             f"narrow{more}")
