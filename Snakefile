@@ -20,6 +20,7 @@ configfile: "config/config.yaml"
 
 sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "rules"))
 from config_checks import check as check_config  # noqa: E402
+from scheduling import cancel_pending_timers  # noqa: E402
 
 check_config(config, workflow.basedir)  # the schema, integers written as integers, the style file
 
@@ -49,3 +50,12 @@ rule all:
     default_target: True
     input:
         deliverables,
+
+
+# the scheduler's pending re-evaluation timers (workflow/rules/scheduling.py): the process would wait for them
+onsuccess:
+    cancel_pending_timers()
+
+
+onerror:
+    cancel_pending_timers()

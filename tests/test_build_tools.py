@@ -31,6 +31,7 @@ def _load(path: Path, name: str):
 dependencies = _load(ROOT / "workflow" / "rules" / "dependencies.py", "dependencies")
 benchmark_build = _load(ROOT / "workflow" / "checks" / "benchmark_build.py", "benchmark_build")
 build_time_table = _load(ROOT / "workflow" / "scripts" / "build_time_table.py", "build_time_table")
+scheduling = _load(ROOT / "workflow" / "rules" / "scheduling.py", "scheduling")
 
 
 def _all_import_nodes(path):
@@ -185,3 +186,29 @@ def test_build_time_table_with_and_without_a_measurement():
                                     "ratios": {"build_cpu": 2.0}})
     for text in ("40 s wall, 70 CPU-s", "150 s wall, 300 CPU-s", "<td>paper</td>", "baseline", "build_cpu 2.00"):
         assert text in page, text
+
+
+def test_pending_scheduler_timers_are_cancelled_and_never_fire():
+    """``cancel_pending_timers`` (the Snakefile's onsuccess and onerror) stops a pending timer at once: its thread
+    ends without running the action, so the process does not wait out the profile's timespan at exit."""
+    import threading
+
+    fired = threading.Event()
+    timer = threading.Timer(60.0, fired.set)
+    timer.start()
+    assert scheduling.cancel_pending_timers() >= 1
+    timer.join(timeout=5.0)
+    assert not timer.is_alive()
+    assert not fired.is_set()
+
+
+def test_the_default_profile_spaces_the_scheduler_timers_and_the_snakefile_cancels_them():
+    """The profile's long re-evaluation timespan is only harmless with the cancelling handlers in the Snakefile."""
+    import yaml
+
+    profile = yaml.safe_load((ROOT / "workflow" / "profiles" / "default" / "config.yaml").read_text())
+    count, timespan = profile["max-jobs-per-timespan"].split("/")
+    assert int(count) >= 100 and timespan.endswith("s")
+    snakefile = (ROOT / "Snakefile").read_text()
+    for handler in ("onsuccess:", "onerror:"):
+        assert f"{handler}\n    cancel_pending_timers()" in snakefile
