@@ -305,6 +305,32 @@ def test_curve_on_a_grid_of_twists_per_sample_matches_one_sample_at_a_time():
 
 
 @pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_foot_points_curve_matches_the_memory_rules_bit_for_bit(rig_kind):
+    """The foot points' one-pass evaluation of the curve (``loop_model._FootCurve``, its per-piece factors folded)
+    gives, bit for bit, the torque, slope and curvature of ``torque_along`` on the branches of the memory rules
+    (``masing``, then the skeleton scaled by T_s and C): on a grid of twists around every sample that crosses
+    reversals and loop closures, at each piece's origin (x = 0, where the sign of x is that of the piece's direction)
+    and past the skeleton's last node."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, 7)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    path, turning, branches, offset, lookup = model._curve_of(p)
+    curve = loop_model._FootCurve(lookup, branches["skeleton"], p[0], p[2], offset)
+    first = lookup.first[model.segment]
+    rows = np.vstack([lookup.heading[model.segment], *(threshold[model.segment] for threshold in lookup.thresholds)])
+    origins = lookup.table[0, first] + offset  # each sample's first piece's origin: x = 0 there
+    far = twist + np.sign(lookup.heading[model.segment]) * p[2] * p[0] * 1e3  # past the last node
+    grid = np.vstack([twist + np.linspace(-2e-2, 2e-2, 9)[:, None] * np.ptp(twist), origins, far])
+    expected = torque_along(path, grid - offset, model.segment, branches["curvature"], curvature=True,
+                            turning=turning, lookup=lookup)
+    got = curve(grid, first, rows)
+    for k, value in ((0, got[0]), (1, got[1]), (3, got[2])):
+        assert np.array_equal(expected[k], value)
+    assert np.array_equal(curve(grid, first, rows, torque_only=True), expected[0])
+    assert (np.abs(grid[-1] - offset) > p[2] * p[0] * 100).any() and (expected[1][-1] == 0).any()
+
+
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
 def test_jacobian_with_the_turning_points_in_one_evaluation_matches_two(rig_kind):
     """``masing.jacobian_along`` given the turning torques without their gradient evaluates F at the turning points
     and the samples at once: bit for bit what ``torque_along`` gives with the gradient from ``turning_torques``

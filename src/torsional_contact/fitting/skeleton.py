@@ -139,15 +139,11 @@ class Skeleton:
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
 
-    def __call__(self, x, rotation: bool = False, curvature: bool = False):
-        """(T*, dT*/dx) at x, and omega_m with ``rotation`` or d^2T*/dx^2 with ``curvature``: T*, omega_m and the
-        curvature odd in x, the slope even.
-
-        Beyond the last node (4/3 - T* < 1e-18) T* = 4/3, its slope and curvature 0 and omega_m grows as
-        x / kappa.  The curvature is that of the cubic pieces (continuous slopes, curvature jumps at the nodes).
+    def magnitudes(self, a, curvature: bool = False):
+        """(T*, dT*/dx[, d^2T*/dx^2 with ``curvature``], piece, dx, beyond) at |x| = ``a`` >= 0 (or NaN): T* and the
+        curvature of the positive half (``__call__`` gives them their sign), each point's piece and its offset dx from
+        the piece's left node, and which points lie beyond the last node (None when none does).
         """
-        x = np.asarray(x, dtype=float)
-        a = np.abs(x)
         # the number of nodes x_1 .. x_{n-1} at or below |x|: the piece where it is below the pieces' count (then no
         # point lies at or beyond the last node, nor is NaN), else one more than the last piece for a point at or
         # beyond the last node (and NaN)
@@ -159,28 +155,45 @@ class Skeleton:
         nodes, c0, c1, c2, c3, c2_twice = self._table.take(j, axis=1)
         dx = np.minimum(a, last) - nodes if is_last else a - nodes
         t = c0 + dx * (c1 + dx * (c2 + dx * c3))
+        beyond = None
         if is_last:
             beyond = a > last
-            is_beyond = bool(beyond.any())
-        else:
-            is_beyond = False
-        # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
-        slope = c1 + dx * (c2_twice + 3.0 * dx * c3)
-        if is_beyond:
+            if not beyond.any():
+                beyond = None
+        # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1); 6 dx c3 = 2 (3 dx c3)
+        # exactly (a factor of two), so that the slope and the curvature share that product
+        cubic = 3.0 * dx * c3
+        slope = c1 + dx * (c2_twice + cubic)
+        if beyond is not None:
             slope = np.where(beyond, 0.0, slope)
+        if not curvature:
+            return t, slope, j, dx, beyond
+        second = c2_twice + (cubic + cubic)
+        if beyond is not None:
+            second = np.where(beyond, 0.0, second)
+        return t, slope, second, j, dx, beyond
+
+    def __call__(self, x, rotation: bool = False, curvature: bool = False):
+        """(T*, dT*/dx) at x, and omega_m with ``rotation`` or d^2T*/dx^2 with ``curvature``: T*, omega_m and the
+        curvature odd in x, the slope even.
+
+        Beyond the last node (4/3 - T* < 1e-18) T* = 4/3, its slope and curvature 0 and omega_m grows as
+        x / kappa.  The curvature is that of the cubic pieces (continuous slopes, curvature jumps at the nodes).
+        """
+        x = np.asarray(x, dtype=float)
+        a = np.abs(x)
         sign = np.sign(x)
         if curvature:
-            second = c2_twice + 6.0 * dx * c3
-            if is_beyond:
-                second = np.where(beyond, 0.0, second)
+            t, slope, second = self.magnitudes(a, True)[:3]
             return sign * t, slope, sign * second
+        t, slope, j, dx, beyond = self.magnitudes(a)
         if not rotation:
             return sign * t, slope
         if self._omega_table is None:
             self._omega_table = np.array(self._power_basis(self._omega, self._omega_slope))
         c0, c1, c2, c3 = self._omega_table.take(j, axis=1)
         omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        if is_beyond:
+        if beyond is not None:
             extra = (a - self._last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)
         return sign * t, slope, sign * omega
