@@ -17,6 +17,7 @@ from torsional_contact import fit_loop
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.diagnostics import AccuracyWarning, NoiseLimitedFitWarning
 from torsional_contact.fitting import loop_fit, loop_model, masing, profile, slip_test
+from torsional_contact.fitting import skeleton as skeleton_module
 from torsional_contact.fitting.bootstrap import (
     bias_corrected_percentiles,
     bias_correction,
@@ -112,13 +113,16 @@ def test_skeleton_inverse_against_root_finding(kappa):
 def test_skeleton_at_and_beyond_its_last_node_against_the_clipped_evaluation(kappa):
     """``Skeleton`` evaluates a point at or beyond its last node (or NaN) on the last piece with |x| clipped to that
     node: bit for bit what the direct evaluation (the piece from the inner nodes, |x| clipped, T*' and T*'' set to 0
-    beyond, omega_m continued) gives, for arrays with and without such points."""
+    beyond, omega_m continued) gives, for arrays with and without such points, and for arrays large enough that
+    only their points at or above the slip onset are searched for their piece (in stick, on a grid of points)."""
     skeleton = Skeleton(kappa)
     nodes = skeleton._x
     last = nodes[-1]
     inside = np.concatenate([np.linspace(0.0, last, 37)[:-1], nodes[:-1], nodes[1:-1] - 1e-9, [1.0, 0.999]])
     outside = np.array([last, np.nextafter(last, np.inf), 1.5 * last, np.nan])
-    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]])):
+    stick = np.linspace(-1.0, 1.0, 2 * skeleton_module.SEARCH_SPLIT + 1)  # x = 1 (the onset node) and -1 included
+    large = np.concatenate([stick, inside, outside, -inside])
+    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]]), large):
         a = np.abs(x)
         j = np.searchsorted(nodes[1:-1], a, side="right")
         c0, c1, c2, c3 = (c[j] for c in skeleton._t_coefficients)

@@ -44,6 +44,9 @@ _NODES_PER_UNIT_RADIUS = 600
 #: Nodes with 1 - b below this take omega and omega' from the small-slip expansion (S2) of ``asymptotics``
 #: (omega = (2/3) delta^3 + (pi/16) delta^4, within 1e-16 there), where the table's omega is rounding noise.
 _ONSET_NODES = 1e-3
+#: Points from which ``Skeleton`` searches only those at or above the slip onset for their piece (below, the extra
+#: gathers cost more than the binary searches they save).
+SEARCH_SPLIT = 1024
 
 
 @functools.lru_cache(maxsize=1)
@@ -139,6 +142,21 @@ class Skeleton:
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
 
+    def _nodes_below(self, a):
+        """The number of nodes x_1 .. x_{n-1} at or below each of ``a`` (``searchsorted`` on the right; NaN: all).
+
+        Below the slip onset (x_1 = 1, stick) it is 0 without a search: on a large array (a foot points' grid, most
+        of it in stick on a partial-slip loop) only the other points are searched, the same numbers for fewer
+        binary searches.
+        """
+        if a.size < SEARCH_SPLIT:
+            return self._right.searchsorted(a, side="right")
+        flat = a.ravel()
+        searched = np.flatnonzero(~(flat < self._right[0]))  # at or above the onset, or NaN
+        j = np.zeros(flat.size, dtype=np.intp)
+        j[searched] = self._right.searchsorted(flat.take(searched), side="right")
+        return j.reshape(a.shape)
+
     def magnitudes(self, a, curvature: bool = False):
         """(T*, dT*/dx[, d^2T*/dx^2 with ``curvature``], piece, dx, beyond) at |x| = ``a`` >= 0 (or NaN): T* and the
         curvature of the positive half (``__call__`` gives them their sign), each point's piece and its offset dx from
@@ -147,7 +165,7 @@ class Skeleton:
         # the number of nodes x_1 .. x_{n-1} at or below |x|: the piece where it is below the pieces' count (then no
         # point lies at or beyond the last node, nor is NaN), else one more than the last piece for a point at or
         # beyond the last node (and NaN)
-        j = self._right.searchsorted(a, side="right")
+        j = self._nodes_below(a)
         is_last = int(j.max(initial=0)) > self._pieces - 1
         if is_last:
             last = self._last
