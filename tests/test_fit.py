@@ -17,6 +17,7 @@ from torsional_contact import fit_loop
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.diagnostics import AccuracyWarning, NoiseLimitedFitWarning
 from torsional_contact.fitting import loop_fit, loop_model, masing, profile, slip_test
+from torsional_contact.fitting import skeleton as skeleton_module
 from torsional_contact.fitting.bootstrap import (
     bias_corrected_percentiles,
     bias_correction,
@@ -112,13 +113,16 @@ def test_skeleton_inverse_against_root_finding(kappa):
 def test_skeleton_at_and_beyond_its_last_node_against_the_clipped_evaluation(kappa):
     """``Skeleton`` evaluates a point at or beyond its last node (or NaN) on the last piece with |x| clipped to that
     node: bit for bit what the direct evaluation (the piece from the inner nodes, |x| clipped, T*' and T*'' set to 0
-    beyond, omega_m continued) gives, for arrays with and without such points."""
+    beyond, omega_m continued) gives, for arrays with and without such points, and for arrays large enough that
+    only their points at or above the slip onset are searched for their piece (in stick, on a grid of points)."""
     skeleton = Skeleton(kappa)
     nodes = skeleton._x
     last = nodes[-1]
     inside = np.concatenate([np.linspace(0.0, last, 37)[:-1], nodes[:-1], nodes[1:-1] - 1e-9, [1.0, 0.999]])
     outside = np.array([last, np.nextafter(last, np.inf), 1.5 * last, np.nan])
-    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]])):
+    stick = np.linspace(-1.0, 1.0, 2 * skeleton_module.SEARCH_SPLIT + 1)  # x = 1 (the onset node) and -1 included
+    large = np.concatenate([stick, inside, outside, -inside])
+    for x in (inside, -inside, np.concatenate([inside, outside]), np.concatenate([-inside, outside, [-last]]), large):
         a = np.abs(x)
         j = np.searchsorted(nodes[1:-1], a, side="right")
         c0, c1, c2, c3 = (c[j] for c in skeleton._t_coefficients)
@@ -302,6 +306,32 @@ def test_curve_on_a_grid_of_twists_per_sample_matches_one_sample_at_a_time():
         alone = model.torque_at(p, grid[:, i], index=np.full(grid.shape[0], i), curvature=True)
         for k in (0, 1, 3):
             assert np.array_equal(broadcast[k][:, i], alone[k])
+
+
+@pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])
+def test_foot_points_curve_matches_the_memory_rules_bit_for_bit(rig_kind):
+    """The foot points' one-pass evaluation of the curve (``loop_model._FootCurve``, its per-piece factors folded)
+    gives, bit for bit, the torque, slope and curvature of ``torque_along`` on the branches of the memory rules
+    (``masing``, then the skeleton scaled by T_s and C): on a grid of twists around every sample that crosses
+    reversals and loop closures, at each piece's origin (x = 0, where the sign of x is that of the piece's direction)
+    and past the skeleton's last node."""
+    torque, twist, s_t, s_w = _noisy_record(rig_kind, 7)
+    model = _model(torque, twist, s_t, s_w)
+    p = _true_parameters(twist, model.reversals)
+    path, turning, branches, offset, lookup = model._curve_of(p)
+    curve = loop_model._FootCurve(lookup, branches["skeleton"], p[0], p[2], offset)
+    first = lookup.first[model.segment]
+    rows = np.vstack([lookup.heading[model.segment], *(threshold[model.segment] for threshold in lookup.thresholds)])
+    origins = lookup.table[0, first] + offset  # each sample's first piece's origin: x = 0 there
+    far = twist + np.sign(lookup.heading[model.segment]) * p[2] * p[0] * 1e3  # past the last node
+    grid = np.vstack([twist + np.linspace(-2e-2, 2e-2, 9)[:, None] * np.ptp(twist), origins, far])
+    expected = torque_along(path, grid - offset, model.segment, branches["curvature"], curvature=True,
+                            turning=turning, lookup=lookup)
+    got = curve(grid, first, rows)
+    for k, value in ((0, got[0]), (1, got[1]), (3, got[2])):
+        assert np.array_equal(expected[k], value)
+    assert np.array_equal(curve(grid, first, rows, torque_only=True), expected[0])
+    assert (np.abs(grid[-1] - offset) > p[2] * p[0] * 100).any() and (expected[1][-1] == 0).any()
 
 
 @pytest.mark.parametrize("rig_kind", ["torque-controlled partial slip", "twist-controlled gross slip"])

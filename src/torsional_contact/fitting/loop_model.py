@@ -67,7 +67,7 @@ import math
 
 import numpy as np
 
-from .masing import curvature_along, jacobian_along, pieces, torque_along, turning_torques, walk
+from .masing import jacobian_along, pieces, torque_along, turning_torques, walk
 from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
@@ -176,11 +176,12 @@ class LoopModel:
             return self._foot[1]
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         path, turning, branches, offset, lookup = self._curve_of(p)
-        branch = branches["curvature"]
-
-        def curve(twist, segment):
-            """(g, dg/dtheta, d^2g/dtheta^2) at twists of any shape, ``segment`` broadcast against them."""
-            return curvature_along(lookup, twist - offset, segment, branch)
+        curve = _FootCurve(lookup, branches["skeleton"], p[0], p[2], offset)
+        # each sample's first piece (ints), and rows of floats: torque, twist, then the heading of its segment and the
+        # ends of its pieces (``_FootCurve``): gathered together for the samples still moving
+        first = lookup.first[self.segment]
+        observed = np.vstack([self._observed, lookup.heading[self.segment],
+                              *(threshold[self.segment] for threshold in lookup.thresholds)])
 
         # Start from the best of a grid of twists around each sample.  The global minimum lies within
         # s_theta sqrt(misfit at the measured twist) of it (its misfit is no larger, and the twist term alone would
@@ -189,77 +190,76 @@ class LoopModel:
         # one often enough to make the sum of squares jump as the parameters move.  The grid is (grid point,
         # sample); every sample's column shares its segment.
         columns = self._columns
-        measured = torque_along(path, self.twist - offset, self.segment, branches["value"], turning=turning,
-                                lookup=lookup)[0]  # ``torque_at`` at the measured twists
+        measured = curve(self.twist, first, observed[2:], torque_only=True)  # ``torque_at`` at the measured twists
         misfit = (self.torque - measured) ** 2 / s_t2
         reach = self.twist_noise * np.sqrt(misfit)
         grid = self.twist + FOOT_GRID[:, None] * reach
-        g_grid, s_grid, c_grid = curve(grid, self.segment)
+        g_grid, s_grid, c_grid = curve(grid, first, observed[2:])
         values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
         # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and its
         # misfit there (``_descend``); the grid point of each sample in the flattened (grid point, sample) arrays
         pick = values.argmin(axis=0) * columns.size + columns
-        state = np.array([grid.take(pick), g_grid.take(pick), s_grid.take(pick), c_grid.take(pick), values.take(pick)])
-        state = self._descend(curve, state, columns)
+        state = np.array([grid, g_grid, s_grid, c_grid, values]).reshape(5, -1).take(pick, axis=1)
+        state = self._descend(curve, state, columns, first, observed)
         if lookup.thresholds:
-            state = self._across_corners(curve, state, lookup, offset, reach)
+            state = self._across_corners(curve, state, lookup, offset, reach, first, observed)
         u, torque, slope = state[0], state[1], state[2]
         self._foot = (key, (u, torque, slope))
         return self._foot[1]
 
-    def _descend(self, curve, start, samples):
+    def _descend(self, curve, start, samples, first, observed):
         """Newton's steps (``_project``) for the samples ``samples`` from their states ``start`` (rows twist, torque,
         slope and curvature, and their squared distances (noise units) if known, one column per sample) until none
-        gains more than ``FOOT_GAIN``: their final states, with their squared distances."""
+        gains more than ``FOOT_GAIN``: their final states, with their squared distances.  ``first`` and ``observed``:
+        every sample's first piece and rows of floats (``_project``)."""
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         positions = np.arange(samples.size)
-        # the samples still moving: their observations (rows torque, twist), rows position in ``samples`` and segment,
-        # and states (the iteration's own copies)
-        observed = self._observed.take(samples, axis=1)
-        index = np.array([positions, self.segment[samples]])
+        # the samples still moving: their rows of floats, rows position in ``samples`` and first piece, and states
+        # (the iteration's own copies)
+        observed = observed.take(samples, axis=1)
+        index = np.array([positions, first[samples]])
         if start.shape[0] == 4:
-            (t_obs, w_obs), (w, g) = observed, start[:2]
+            t_obs, w_obs, (w, g) = observed[0], observed[1], start[:2]
             start = np.concatenate([start, [(t_obs - g) ** 2 / s_t2 + (w_obs - w) ** 2 / s_w2]])
         state = start.copy()
         current = start
-        for _ in range(FOOT_ITERATIONS):
-            (t_obs, w_obs), (w, g, s, c, misfit) = observed, current
-            with np.errstate(over="ignore", invalid="ignore"):
+        with np.errstate(over="ignore", invalid="ignore"):
+            for _ in range(FOOT_ITERATIONS):
+                t_obs, w_obs, (w, g, s, c, misfit) = observed[0], observed[1], current
                 torque_misfit, twist_misfit = t_obs - g, w_obs - w
                 gauss_newton = s * s / s_t2 + 1.0 / s_w2  # half the misfit's second derivative, without curvature
                 newton = gauss_newton - torque_misfit * c / s_t2  # with it: quadratic convergence where positive
                 gradient = torque_misfit * s / s_t2 + twist_misfit / s_w2  # minus half the misfit's derivative
                 step = gradient / np.where(newton > 0.1 * gauss_newton, newton, gauss_newton)
                 gain = step * gradient  # predicted decrease of the misfit
-            # no gain where it is NaN or +inf (FOOT_GAIN > 0)
-            keep = ((gain > FOOT_GAIN) & (gain != np.inf)).nonzero()[0]
-            if keep.size == 0:
-                break
-            n = index.shape[1]
-            if keep.size < n:
-                observed, index, current, step = (observed.take(keep, axis=1), index.take(keep, axis=1),
-                                                  current.take(keep, axis=1), step.take(keep))
-                (t_obs, w_obs), (w, misfit), n = observed, current[::4], keep.size
-            # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if it
-            # lowers the misfit
-            trial = w + _FRACTIONS_COLUMN * step
-            g_trial, s_trial, c_trial = curve(trial, index[1])
-            trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
-            # each sample's best fraction in the flattened (fraction, sample) arrays
-            pick = trial_misfit.argmin(axis=0) * n + positions[:n]
-            current = np.array([trial.take(pick), g_trial.take(pick), s_trial.take(pick), c_trial.take(pick),
-                                trial_misfit.take(pick)])
-            lower = (current[4] <= misfit).nonzero()[0]
-            # a sample whose step cannot lower its misfit sits at its foot point (a kink)
-            if lower.size < n:
-                observed, index, current = (observed.take(lower, axis=1), index.take(lower, axis=1),
-                                            current.take(lower, axis=1))
-            state[:, index[0]] = current
-            if lower.size == 0:
-                break
+                # no gain where it is NaN or +inf (FOOT_GAIN > 0)
+                keep = ((gain > FOOT_GAIN) & (gain != np.inf)).nonzero()[0]
+                if keep.size == 0:
+                    break
+                n = index.shape[1]
+                if keep.size < n:
+                    observed, index, current, step = (observed.take(keep, axis=1), index.take(keep, axis=1),
+                                                      current.take(keep, axis=1), step.take(keep))
+                    t_obs, w_obs, (w, misfit), n = observed[0], observed[1], current[::4], keep.size
+                # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if
+                # it lowers the misfit
+                trial = w + _FRACTIONS_COLUMN * step
+                g_trial, s_trial, c_trial = curve(trial, index[1], observed[2:])
+                trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
+                # each sample's best fraction in the flattened (fraction, sample) arrays
+                pick = trial_misfit.argmin(axis=0) * n + positions[:n]
+                current = np.array([trial, g_trial, s_trial, c_trial, trial_misfit]).reshape(5, -1).take(pick, axis=1)
+                lower = (current[4] <= misfit).nonzero()[0]
+                # a sample whose step cannot lower its misfit sits at its foot point (a kink)
+                if lower.size < n:
+                    observed, index, current = (observed.take(lower, axis=1), index.take(lower, axis=1),
+                                                current.take(lower, axis=1))
+                state[:, index[0]] = current
+                if lower.size == 0:
+                    break
         return state
 
-    def _across_corners(self, curve, state, lookup, offset, reach):
+    def _across_corners(self, curve, state, lookup, offset, reach, first, observed):
         """The foot points, checked across the corners of the curve within each sample's reach.
 
         Where a branch joins an earlier one (a piece end of its segment) the curve has a corner, and a sample's
@@ -268,13 +268,13 @@ class LoopModel:
         basin the grid chose.  For each corner within a sample's reach, the misfit just past it on the side away from
         the foot point so far is evaluated; where it falls going away from the corner (a minimum in that piece), the
         steps start again from there, and the lower of the two foot points is kept.  ``state``: as ``_descend``
-        returns it (its squared distances in row 4).
+        returns it (its squared distances in row 4); ``first`` and ``observed`` as ``_descend`` takes them.
         """
-        heading = lookup.heading[self.segment]
+        heading = observed[2]
         best = state[4]  # the squared distances, updated with the states
-        for threshold in lookup.thresholds:  # one piece end per segment (inf: none)
+        for threshold in observed[3:]:  # one piece end per segment (inf: none)
             with np.errstate(invalid="ignore"):
-                corner = threshold[self.segment] * heading + offset  # the twist of the corner
+                corner = threshold * heading + offset  # the twist of the corner
                 samples = (np.isfinite(corner) & (np.abs(corner - self.twist) <= reach)).nonzero()[0]  # those near
             if samples.size == 0:
                 continue
@@ -282,14 +282,14 @@ class LoopModel:
             # the side of the corner away from the foot point so far (the steps found the minimum on its own side)
             side = np.where(direction * (state[0].take(samples) - corner) > 0.0, -direction, direction)
             twist = corner + side * 1e-6 * np.maximum(reach.take(samples), self.twist_noise)
-            g, slope, second = curve(twist, self.segment.take(samples))
+            g, slope, second = curve(twist, first.take(samples), observed[2:].take(samples, axis=1))
             # half the misfit's derivative along the twist, going away from the corner on that side
             falling = side * ((g - self.torque[samples]) * slope / self.torque_noise**2
                               + (twist - self.twist[samples]) / self.twist_noise**2) < 0.0
             if not falling.any():
                 continue
             moved = samples[falling]
-            end = self._descend(curve, np.array([twist, g, slope, second])[:, falling], moved)
+            end = self._descend(curve, np.array([twist, g, slope, second])[:, falling], moved, first, observed)
             improved = end[4] < best[moved]
             state[:, moved[improved]] = end[:, improved]
         return state
@@ -386,4 +386,56 @@ def _branches(skeleton: Skeleton, slip_torque: float, compliance: float) -> dict
         grad = np.array([t - slope * x, d_kappa, -slip_torque * slope * x / compliance]).T  # the columns
         return slip_torque * t, slope / compliance, grad
 
-    return {"value": value, "curvature": curvature, "jacobian": jacobian}
+    return {"value": value, "curvature": curvature, "jacobian": jacobian, "skeleton": skeleton}
+
+
+class _FootCurve:
+    """g, dg/dtheta and d^2g/dtheta^2 at twists of the samples, for their foot points (``LoopModel._project``).
+
+    The numbers of ``masing.curvature_along`` on the "curvature" branch of ``_branches``, in one pass: a point at
+    twist theta on piece k (origin twist u_k and torque T_k, direction d and factor g) has
+    x = (theta - theta_0 - u_k) / (C T_s g / d) on the skeleton, torque T_k + d g T_s T*(x) (N m), slope T*'(x) / C
+    (N m / rad) and curvature T*''(x) / (C^2 T_s g / d) (N m / rad^2).  The factors d / g and d g are +-1 or +-2 to
+    the power +-1, so that folding them into one divisor or factor per piece is exact: the same roundings as scaling,
+    then dividing, in turn.
+
+    Parameters
+    ----------
+    lookup : masing.Pieces
+        The walk's pieces.
+    skeleton : Skeleton
+        T*(x) for the parameters' kappa.
+    slip_torque, compliance, offset : float
+        T_s (N m), C (rad / (N m)) and theta_0 (rad).
+    """
+
+    def __init__(self, lookup, skeleton: Skeleton, slip_torque: float, compliance: float, offset: float):
+        slip_torque, compliance = float(slip_torque), float(compliance)
+        scale = compliance * slip_torque
+        origin_twist, origin_torque, shrink, gain = lookup.table
+        # rows, one column per piece: origin twist, origin torque, the divisor of x, the factor of T*, the divisor of
+        # T*'' (each with its piece's d / g or d g)
+        self.table = np.array([origin_twist, origin_torque, scale / shrink, gain * slip_torque,
+                               compliance * scale / shrink])
+        self.skeleton, self.compliance, self.offset = skeleton, compliance, offset
+
+    def __call__(self, twist, first, lookup_rows, torque_only: bool = False):
+        """(g, g', g'') at ``twist`` (rad, any shape ending in the samples' axis), or g alone with ``torque_only``.
+
+        ``first``: each sample's first piece; ``lookup_rows``: rows of floats per sample, the heading of its segment,
+        then the end of each of its pieces in that heading (``masing.Pieces.thresholds``): a point past one lies on a
+        later piece.
+        """
+        u = twist - self.offset
+        piece = first
+        if lookup_rows.shape[0] > 1:
+            ahead = lookup_rows[0] * u
+            for threshold in lookup_rows[1:]:
+                piece = piece + (ahead > threshold)
+        origin_twist, origin_torque, divisor, factor, curvature_divisor = self.table.take(piece, axis=1)
+        x = (u - origin_twist) / divisor
+        sign = np.sign(x)
+        if torque_only:
+            return origin_torque + factor * (sign * self.skeleton.magnitudes(np.abs(x))[0])
+        t, slope, second = self.skeleton.magnitudes(np.abs(x), True)[:3]
+        return origin_torque + factor * (sign * t), slope / self.compliance, sign * second / curvature_divisor

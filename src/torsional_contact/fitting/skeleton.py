@@ -44,6 +44,9 @@ _NODES_PER_UNIT_RADIUS = 600
 #: Nodes with 1 - b below this take omega and omega' from the small-slip expansion (S2) of ``asymptotics``
 #: (omega = (2/3) delta^3 + (pi/16) delta^4, within 1e-16 there), where the table's omega is rounding noise.
 _ONSET_NODES = 1e-3
+#: Points from which ``Skeleton`` searches only those at or above the slip onset for their piece (below, the extra
+#: gathers cost more than the binary searches they save).
+SEARCH_SPLIT = 1024
 
 
 @functools.lru_cache(maxsize=1)
@@ -139,6 +142,55 @@ class Skeleton:
         c3 = (slope[:-1] + slope[1:] - 2.0 * secant) / h**2
         return (value[:-1], slope[:-1], c2, c3)
 
+    def _nodes_below(self, a):
+        """The number of nodes x_1 .. x_{n-1} at or below each of ``a`` (``searchsorted`` on the right; NaN: all).
+
+        Below the slip onset (x_1 = 1, stick) it is 0 without a search: on a large array (a foot points' grid, most
+        of it in stick on a partial-slip loop) only the other points are searched, the same numbers for fewer
+        binary searches.
+        """
+        if a.size < SEARCH_SPLIT:
+            return self._right.searchsorted(a, side="right")
+        flat = a.ravel()
+        searched = np.flatnonzero(~(flat < self._right[0]))  # at or above the onset, or NaN
+        j = np.zeros(flat.size, dtype=np.intp)
+        j[searched] = self._right.searchsorted(flat.take(searched), side="right")
+        return j.reshape(a.shape)
+
+    def magnitudes(self, a, curvature: bool = False):
+        """(T*, dT*/dx[, d^2T*/dx^2 with ``curvature``], piece, dx, beyond) at |x| = ``a`` >= 0 (or NaN): T* and the
+        curvature of the positive half (``__call__`` gives them their sign), each point's piece and its offset dx from
+        the piece's left node, and which points lie beyond the last node (None when none does).
+        """
+        # the number of nodes x_1 .. x_{n-1} at or below |x|: the piece where it is below the pieces' count (then no
+        # point lies at or beyond the last node, nor is NaN), else one more than the last piece for a point at or
+        # beyond the last node (and NaN)
+        j = self._nodes_below(a)
+        is_last = int(j.max(initial=0)) > self._pieces - 1
+        if is_last:
+            last = self._last
+            j = np.minimum(j, self._pieces - 1)  # the piece: min(last node index, pieces - 1)
+        nodes, c0, c1, c2, c3, c2_twice = self._table.take(j, axis=1)
+        dx = np.minimum(a, last) - nodes if is_last else a - nodes
+        t = c0 + dx * (c1 + dx * (c2 + dx * c3))
+        beyond = None
+        if is_last:
+            beyond = a > last
+            if not beyond.any():
+                beyond = None
+        # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1); 6 dx c3 = 2 (3 dx c3)
+        # exactly (a factor of two), so that the slope and the curvature share that product
+        cubic = 3.0 * dx * c3
+        slope = c1 + dx * (c2_twice + cubic)
+        if beyond is not None:
+            slope = np.where(beyond, 0.0, slope)
+        if not curvature:
+            return t, slope, j, dx, beyond
+        second = c2_twice + (cubic + cubic)
+        if beyond is not None:
+            second = np.where(beyond, 0.0, second)
+        return t, slope, second, j, dx, beyond
+
     def __call__(self, x, rotation: bool = False, curvature: bool = False):
         """(T*, dT*/dx) at x, and omega_m with ``rotation`` or d^2T*/dx^2 with ``curvature``: T*, omega_m and the
         curvature odd in x, the slope even.
@@ -148,39 +200,18 @@ class Skeleton:
         """
         x = np.asarray(x, dtype=float)
         a = np.abs(x)
-        # the number of nodes x_1 .. x_{n-1} at or below |x|: the piece where it is below the pieces' count (then no
-        # point lies at or beyond the last node, nor is NaN), else one more than the last piece for a point at or
-        # beyond the last node (and NaN)
-        j = self._right.searchsorted(a, side="right")
-        is_last = int(j.max(initial=0)) > self._pieces - 1
-        if is_last:
-            last = self._last
-            j = np.minimum(j, self._pieces - 1)  # the piece: min(last node index, pieces - 1)
-        nodes, c0, c1, c2, c3, c2_twice = self._table.take(j, axis=1)
-        dx = np.minimum(a, last) - nodes if is_last else a - nodes
-        t = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        if is_last:
-            beyond = a > last
-            is_beyond = bool(beyond.any())
-        else:
-            is_beyond = False
-        # the plateau beyond the last node (for kappa = 0 the last node's own slope is 1)
-        slope = c1 + dx * (c2_twice + 3.0 * dx * c3)
-        if is_beyond:
-            slope = np.where(beyond, 0.0, slope)
         sign = np.sign(x)
         if curvature:
-            second = c2_twice + 6.0 * dx * c3
-            if is_beyond:
-                second = np.where(beyond, 0.0, second)
+            t, slope, second = self.magnitudes(a, True)[:3]
             return sign * t, slope, sign * second
+        t, slope, j, dx, beyond = self.magnitudes(a)
         if not rotation:
             return sign * t, slope
         if self._omega_table is None:
             self._omega_table = np.array(self._power_basis(self._omega, self._omega_slope))
         c0, c1, c2, c3 = self._omega_table.take(j, axis=1)
         omega = c0 + dx * (c1 + dx * (c2 + dx * c3))
-        if is_beyond:
+        if beyond is not None:
             extra = (a - self._last) / self.kappa if self.kappa > 0 else np.where(beyond, np.inf, 0.0)
             omega = np.where(beyond, omega + extra, omega)
         return sign * t, slope, sign * omega
