@@ -3,6 +3,9 @@
 Figures are made with ``subplots`` here, on matplotlib's Agg canvas, without pyplot: a script
 has no interactive session, and pyplot's import and figure registry cost a tenth of a CPU-second
 per job.  This module does not change the backend of an interactive session that imports it.
+Two matplotlib internals are wrapped, each only where the wrapped function exists: math strings are
+laid out once per output type (``_share_mathtext_layouts``), and the PDF's embedded font subsets leave
+out the OpenType layout tables that only a text shaper reads (``_embed_fonts_without_layout_tables``).
 """
 
 from __future__ import annotations
@@ -102,9 +105,6 @@ def _embed_fonts_without_layout_tables() -> None:
     _backend_pdf_ps.subset = _SubsettingWithoutLayout(subsetting)
 
 
-_embed_fonts_without_layout_tables()
-
-
 def use_style(style_path=None) -> None:
     """Apply the project's matplotlib style file (an input of every figure rule)."""
     if style_path:
@@ -123,12 +123,14 @@ def subplots(nrows=1, ncols=1, **kwargs):
 
 
 def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
-    """Save ``fig`` as PDF (and PNG), with the generating script in the metadata.
+    """Save ``fig`` as PDF (and PNG), with the generating script in the metadata; the PDF's fonts are
+    embedded without their layout tables (``_embed_fonts_without_layout_tables``).
 
     ``savefig`` writes a temporary file, which ``io.output.atomic_path`` renames onto a regular
     file (or a symbolic link's target) or copies into a FIFO or device; a directory or a missing
     directory is refused with ``io.output.OutputError`` naming --pdf or --png.
     """
+    _embed_fonts_without_layout_tables()  # here, not on import: the PDF backend imports fontTools' subsetter
     with atomic_path(pdf_path, label="--pdf") as tmp:
         fig.savefig(tmp, format="pdf", metadata={"Creator": "torsional_contact workflow"})
     if png_path:
