@@ -138,22 +138,3 @@ def test_load_integral_constant_keeps_g_at_the_eigenvalues_without_mixing_them_u
     kept = integrals._integral_t_j1_kept(lam.tobytes())
     with pytest.raises(ValueError):
         kept[0] = 0.0
-
-
-def test_weak_forms_at_one_stick_radius_evaluate_g_at_lam_b_once(monkeypatch):
-    """G(lam b) of ``load_integral_constant`` is kept as G(lam) is: the complete and the printed weak form at one
-    b, with either closure, run the Neumann series of G once, for lam b (G(lam) is kept from an earlier b)."""
-    from torsional_contact.diagnostics import UnphysicalResultWarning
-    from torsional_contact.solvers.weak_form import solve_series
-
-    lam = bessel_j2_zeros(145)
-    b = 0.4321  # a stick radius no other test solves at
-    integrals.load_integral_constant(lam, 0.5)
-    evaluated = []
-    fresh = integrals.integral_t_j1
-    monkeypatch.setattr(integrals, "integral_t_j1", lambda x: evaluated.append(np.array(x)) or fresh(x))
-    with pytest.warns(UnphysicalResultWarning):  # the printed system closed by traction continuity: T* > 4/3
-        torques = [solve_series(b, method, 145, closure).torque for method, closure
-                   in (("complete", "traction"), ("published", "traction"), ("published", "torque"))]
-    assert len(evaluated) == 1 and np.array_equal(evaluated[0], lam * b)
-    assert len(set(torques)) == 3  # three different systems or closures, not one answer reused

@@ -28,16 +28,11 @@ def curve(method, n_terms, radii):
         return np.array([solve(stick_radius=b, method=method, n_terms=n_terms).torque for b in radii])
 
 
-def weak_form_curves(n_terms, radii):
-    """T* of the complete weak form, of the printed system (eq. 38) and of the printed system with the torque
-    closure (see solvers.weak_form) at n_terms: three arrays over ``radii``.  The three are solved one after
-    the other at each b, so that they share the integrals of b the library keeps (``load_integral_constant``)."""
+def closure_curve(closure, n_terms, radii):
+    """The printed system (eq. 38) at n_terms with another closure (see solvers.weak_form)."""
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", UnphysicalResultWarning)  # published T* > 4/3: kept, not hidden
-        rows = [(solve(stick_radius=b, method="complete", n_terms=n_terms).torque,
-                 solve(stick_radius=b, method="published", n_terms=n_terms).torque,
-                 solve_series(b, "published", n_terms, "torque").torque) for b in radii]
-    return np.array(rows).reshape(len(radii), 3).T
+        warnings.simplefilter("ignore", UnphysicalResultWarning)
+        return np.array([solve_series(b, "published", n_terms, closure).torque for b in radii])
 
 
 def main():
@@ -53,7 +48,9 @@ def main():
     complete = np.full(radii.shape, np.nan)
     published = np.full(radii.shape, np.nan)
     torque_closure = np.full(radii.shape, np.nan)
-    complete[inside], published[inside], torque_closure[inside] = weak_form_curves(a.n_terms, radii[inside])
+    complete[inside] = curve("complete", a.n_terms, radii[inside])
+    published[inside] = curve("published", a.n_terms, radii[inside])
+    torque_closure[inside] = closure_curve("torque", a.n_terms, radii[inside])
     fast = curve("fast", None, radii)
     meta = provenance(method="weak forms at n_terms on their resolved range (torque_complete, torque_published: "
                       "regularity closure, traction continuity at r = b; torque_published_torque_closure: the "

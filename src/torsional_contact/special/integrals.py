@@ -110,36 +110,32 @@ def load_integral_linear(lam, b):
     return -stick_moment(lam, b)
 
 
-#: Largest argument array whose G ``load_integral_constant`` keeps (``_integral_t_j1_kept``).
+#: Largest set of eigenvalues whose G(lam) ``load_integral_constant`` keeps (``_integral_t_j1_kept``).
 _KEPT_SIZE = 1 << 14
 
 
 @functools.lru_cache(maxsize=16)
-def _integral_t_j1_kept(arguments: bytes) -> np.ndarray:
+def _integral_t_j1_kept(eigenvalues: bytes) -> np.ndarray:
     """``integral_t_j1`` of the float64 array with these bytes (read-only), for the last few arrays asked for."""
-    values = integral_t_j1(np.frombuffer(arguments, dtype=float))
+    values = integral_t_j1(np.frombuffer(eigenvalues, dtype=float))
     values.flags.writeable = False
     return values
-
-
-def _integral_t_j1_of(x: np.ndarray) -> np.ndarray:
-    """``integral_t_j1(x)``, kept (``_integral_t_j1_kept``) for a 1-d x of up to ``_KEPT_SIZE`` entries."""
-    if x.ndim == 1 and x.size <= _KEPT_SIZE:
-        return _integral_t_j1_kept(np.ascontiguousarray(x).tobytes())
-    return integral_t_j1(x)
 
 
 def load_integral_constant(lam, b):
     """int_b^1 r J1(lam r) dr = [G(lam) - G(lam b)] / lam^2, G(x) = int_0^x t J1(t) dt.
 
-    The 1F2 part of eq. (51), in the stable form of ``integral_t_j1``.  Any lam > 0.  G is kept for the last few
-    1-d arguments of up to ``_KEPT_SIZE`` entries (keyed on their bytes; the same numbers): G(lam) does not
-    depend on b, so that a sweep over stick radii evaluates it once, and G(lam b) is shared by the weak forms
-    solved at one b (complete, published, each closure).  Its Neumann series costs about 2 ms for 145
-    eigenvalues, more than the rest of an N = 145 solve.
+    The 1F2 part of eq. (51), in the stable form of ``integral_t_j1``.  Any lam > 0.  G(lam) does not depend
+    on b: for a 1-d lam of up to ``_KEPT_SIZE`` entries it is kept for the last few lam (keyed on their bytes;
+    the same numbers), so that a sweep over stick radii evaluates it once (its Neumann series costs about 1 ms
+    for 145 eigenvalues, more than the rest of an N = 145 solve).
     """
     lam = np.asarray(lam, dtype=float)
-    return (_integral_t_j1_of(lam) - _integral_t_j1_of(lam * b)) / (lam * lam)
+    if lam.ndim == 1 and lam.size <= _KEPT_SIZE:
+        at_lam = _integral_t_j1_kept(np.ascontiguousarray(lam).tobytes())
+    else:
+        at_lam = integral_t_j1(lam)
+    return (at_lam - integral_t_j1(lam * b)) / (lam * lam)
 
 
 def load_vector(lam, b, torque):
