@@ -1,16 +1,24 @@
 """The workflow's figure helper (workflow/scripts/_plotting.py) draws what plain matplotlib draws.
 
-The helper makes figures without pyplot and lets all renderers of one output type share the layouts
-of math strings (matplotlib caches them per renderer).  The check is independent of the helper:
-the same figure (log axes, whose tick labels are math strings, and math in labels, title and
-legend) is drawn once by plain pyplot and ``savefig`` in one process and once through the helper
-in another; the PDF and the PNG must be byte-identical (SOURCE_DATE_EPOCH fixes the PDF's dates).
+The helper makes figures without pyplot, lets all renderers of one output type share the layouts
+of math strings (matplotlib caches them per renderer) and embeds the PDF's TrueType subsets without
+the OpenType layout tables.  The check is independent of the helper: the same figure (log axes,
+whose tick labels are math strings, and math in labels, title and legend) is drawn once by plain
+pyplot and ``savefig`` in one process and once through the helper in another; the PNG must be
+byte-identical, and so must every stream of the PDF but the font programs (page content, widths,
+character-to-glyph maps, ToUnicode maps; SOURCE_DATE_EPOCH fixes the PDF's dates), whose glyphs
+must have the outlines and advance widths of plain matplotlib's.
 """
 
+import io
 import os
+import re
 import subprocess
 import sys
+import zlib
 from pathlib import Path
+
+from fontTools.ttLib import TTFont
 
 ROOT = Path(__file__).resolve().parents[1]
 STYLE = ROOT / "workflow" / "styles" / "paper.mplstyle"
@@ -59,12 +67,41 @@ def _render(code, tmp_path, name):
     return pdf.read_bytes(), png.read_bytes()
 
 
-def test_helper_draws_the_same_bytes_as_plain_matplotlib(tmp_path):
+TRUETYPE = b"\x00\x01\x00\x00"  # the first bytes of a TrueType font program
+LAYOUT_TABLES = {"GSUB", "GPOS", "GDEF", "JSTF", "BASE", "MATH", "kern"}
+
+
+def _streams(pdf: bytes):
+    """(font programs, other streams) of a PDF as matplotlib writes it: every stream Flate-compressed."""
+    streams = [zlib.decompress(data) for data in re.findall(rb"\nstream\n(.*?)\nendstream", pdf, re.S)]
+    return ([TTFont(io.BytesIO(s)) for s in streams if s.startswith(TRUETYPE)],
+            [s for s in streams if not s.startswith(TRUETYPE)])
+
+
+def _glyphs(font):
+    """{glyph name: (outline bytes, advance width)} of a TrueType font."""
+    glyf = font["glyf"]
+    return {name: (glyf[name].compile(glyf), font["hmtx"][name][0]) for name in font.getGlyphOrder()}
+
+
+def test_helper_draws_what_plain_matplotlib_draws(tmp_path):
     plain_pdf, plain_png = _render(PLAIN, tmp_path, "plain")
     helper_pdf, helper_png = _render(HELPER, tmp_path, "helper")
     assert plain_png.startswith(b"\x89PNG") and plain_pdf.startswith(b"%PDF")
     assert helper_png == plain_png
-    assert helper_pdf == plain_pdf
+    plain_fonts, plain_streams = _streams(plain_pdf)
+    helper_fonts, helper_streams = _streams(helper_pdf)
+    assert helper_streams == plain_streams and len(helper_streams) > 10
+    assert len(helper_fonts) == len(plain_fonts) >= 2  # upright and italic (math) DejaVu Sans
+    for plain, helper in zip(plain_fonts, helper_fonts, strict=True):
+        assert LAYOUT_TABLES & set(plain.keys()) and not LAYOUT_TABLES & set(helper.keys())
+        assert set(helper.keys()) == set(plain.keys()) - LAYOUT_TABLES
+        assert helper["name"].getDebugName(6) == plain["name"].getDebugName(6)
+        plain_glyphs, helper_glyphs = _glyphs(plain), _glyphs(helper)
+        # plain matplotlib's subset may hold glyphs reachable only through substitutions (ligatures, math
+        # variants), which the PDF never names: the CID-to-glyph maps among the streams above are the same
+        assert len(helper_glyphs) > 4 and helper_glyphs.items() <= plain_glyphs.items()
+        assert helper.getBestCmap().items() <= plain.getBestCmap().items()
 
 
 def test_math_strings_are_laid_out_once_per_output_type_dpi_and_font(tmp_path):

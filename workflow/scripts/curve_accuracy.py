@@ -12,6 +12,7 @@ Units: b in a, T* = 2T/(f F a), omega in f p0 / mu, energies in (f p0)^2 a^3 / m
 from __future__ import annotations
 
 import argparse
+import functools
 import time
 import warnings
 
@@ -27,7 +28,10 @@ from torsional_contact.solvers.abel_fredholm import solve_abel_fredholm
 from torsional_contact.typeset import sci
 
 
+@functools.cache
 def direct(b):
+    """The Abel-Fredholm solution at b, kept: the root search's best point is one it evaluated, and is
+    compared at once (33 of 262 solves at the default settings)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResolutionWarning)
         return solve_abel_fredholm(b)
