@@ -651,6 +651,57 @@ def test_integral_x_i1_pair_against_the_series(x, digits):
                 assert pair_value.mid() == single.mid()
 
 
+@pytest.mark.parametrize("digits", [30, 49])
+def test_asymptotic_integral_x_i1_with_coefficients_rounded_once(digits):
+    """Above the threshold F(x) sums its Hankel expansion with the exact phi_k rounded to the working precision once
+    per precision (``_f_coefficients_arb``): bit for bit Horner's rule with each phi_k rounded at every node, and
+    within 2^(12 - prec) relative of mpmath's x^3/6 1F2(3/2; 2, 5/2; x^2/4) at twice the digits; the cache is per
+    precision and leaves flint's precision as it was."""
+    with working_digits(digits):
+        prec = flint.ctx.prec
+        start = special_mp.asymptotic_threshold()
+        for x in [flint.arb(start * f).mid() for f in (1.0, 1.37, 3.0)]:
+            value = special_mp._integral_x_i1_asymptotic(x)
+            assert flint.ctx.prec == prec
+            inverse, total = 1 / x, flint.arb(0)
+            for c in reversed(special_mp._f_coefficients(special_mp.expansion_terms(float(x)))):
+                total = total * inverse + flint.arb(c)
+            assert _key(value) == _key(x.exp() * x * total / (2 * flint.arb.pi() * x).sqrt())
+            with mpmath.workdps(2 * digits):
+                y = _mp(x)
+                exact = y**3 / 6 * mpmath.hyp1f2(mpmath.mpf(3) / 2, 2, mpmath.mpf(5) / 2, y * y / 4)
+                assert abs(_mp(value) / exact - 1) < mpmath.mpf(2) ** (12 - prec)
+    for prec in (64, 256):  # each precision its own roundings
+        saved = flint.ctx.prec
+        flint.ctx.prec = prec
+        try:
+            direct = [flint.arb(c) for c in special_mp._f_coefficients(16)]
+        finally:
+            flint.ctx.prec = saved
+        assert [_key(c) for c in special_mp._f_coefficients_arb(16, prec)] == [_key(c) for c in direct]
+    assert any(low.mid() != high.mid() for low, high in zip(special_mp._f_coefficients_arb(16, 64),
+                                                           special_mp._f_coefficients_arb(16, 256), strict=True))
+
+
+@pytest.mark.parametrize("b", ["0.3", "0.9"])
+def test_xi_profiles_from_the_solve_matrix_by_a_row_vector(b):
+    """The interpolant's xi-profiles take sum_j w_j g_j A(xi_k t_j) as a row vector times the solve's matrix of
+    A(xi_k t_j) (with its edge row t = b weighted by 0): bit for bit (midpoints and radii) the transposed matrix
+    times the column of w_j g_j, formed here entry by entry from the matrix."""
+    n = 30 if b == "0.3" else 64
+    state = solve_state(b, n, 30)
+    a_points, scale, xi, side_full, _, column = state._interpolant
+    with working_digits(30):
+        weights_g = [c * g for c, g in zip(column, state.density, strict=True)]
+        transposed = flint.arb_mat(len(xi), n, [a_points[j, k] for k in range(len(xi)) for j in range(n)])
+        sums = transposed * flint.arb_mat(n, 1, weights_g)
+        two_over_pi = 2 / flint.arb.pi()
+        t_sum = sum((c * tj for c, tj in zip(weights_g, state.nodes, strict=True)), flint.arb(0))
+        expected = [s * (two_over_pi * (sums[k, 0] + x * t_sum) + f)
+                    for k, (s, x, f) in enumerate(zip(scale, xi, side_full, strict=True))]
+    assert [_key(v) for v in state._profile_a] == [_key(v) for v in expected]
+
+
 @pytest.mark.parametrize("b", ["0.5", "0.98"])
 def test_truncated_profile_rows_bound_what_they_drop(b):
     """The profiles' rows of A(xi t) stop early (``kernels_mp.xi_sum_truncation``): the terms they drop,

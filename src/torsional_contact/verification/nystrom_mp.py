@@ -66,7 +66,6 @@ import time
 import warnings
 from dataclasses import dataclass, field
 from functools import cached_property
-from itertools import chain
 
 import flint
 
@@ -259,16 +258,20 @@ class AbelFredholmState:
     # -- the xi-profiles of the interpolant (only the profiles need them: node sweeps skip them) ---------
     @cached_property
     def _profiles(self) -> tuple:
-        """(a_k, y_k): bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail, from the solve's A(xi_k t_j)."""
-        a_values, scale, xi, side_full, side_excess, column = self._interpolant
-        n, n_xi = self.n_nodes, len(xi)
+        """(a_k, y_k): bracket(t) = (2/pi) sum_k [A(xi_k t) a_k + t y_k] + tail, from the solve's A(xi_k t_j).
+
+        sum_j w_j g_j A(xi_k t_j) as a row vector times the solve's matrix of A(xi_k t_j) (its edge row t = b
+        weighted by an exact zero): each entry the same dot product, in the same order, as with the transposed
+        matrix, so the same ball, without building that transpose again.
+        """
+        a_points, scale, xi, side_full, side_excess, column = self._interpolant
+        n_xi = len(xi)
         with working_digits(self.work_digits):
             zero = flint.arb(0)
             two_over_pi = 2 / flint.arb.pi()
             weights_g = [c * g for c, g in zip(column, self.density, strict=True)]
-            columns = chain.from_iterable(a_values[k:n * n_xi:n_xi] for k in range(n_xi))  # A(xi_k t_j) at (k, j)
-            transposed = flint.arb_mat(n_xi, n, list(columns))
-            sum_a = _entries(transposed * _column(weights_g))
+            sums = _row(weights_g + [zero]) * a_points  # A(xi_k t_j) at (j, k), j <= n (the last row: t = b)
+            sum_a = [sums[0, k] for k in range(n_xi)]
             sum_c = sum((c * tj for c, tj in zip(weights_g, self.nodes, strict=True)), zero)
             profile_a = tuple(s * (two_over_pi * (sa + x * sum_c) + f)
                               for s, x, sa, f in zip(scale, xi, sum_a, side_full, strict=True))
@@ -523,7 +526,7 @@ def solve_state(stick_radius, n_nodes: int, work_digits: int, *, first_panel: fl
         rotation = omega_big - torque_rotation(work_digits) * torque
 
         # the xi-profiles of the interpolant are formed from these on first use (AbelFredholmState._profiles)
-        interpolant = (a_values, scale, xi, side_full, side_excess, column)
+        interpolant = (a_points, scale, xi, side_full, side_excess, column)
     return AbelFredholmState(
         stick_radius=b, n_nodes=n, work_digits=work_digits, torque=torque, rigid_rotation=rotation,
         rotation_constant=omega_big, nodes=tuple(t), weights=tuple(wt), density=tuple(density),

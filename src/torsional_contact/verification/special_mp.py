@@ -279,11 +279,11 @@ def _integral_x_i1_series(x, first: bool):
 
 def _integral_x_i1_asymptotic(x):
     """F(x) = exp(x) (2 pi x)^(-1/2) x sum_k phi_k x^-k (large x)."""
-    coefficients = _f_coefficients(expansion_terms(float(x)))
+    coefficients = _f_coefficients_arb(expansion_terms(float(x)), flint.ctx.prec)
     inverse = 1 / x
     total = flint.arb(0)
     for c in reversed(coefficients):
-        total = total * inverse + flint.arb(c)
+        total = total * inverse + c
     return x.exp() * x * total / (2 * flint.arb.pi() * x).sqrt()
 
 
@@ -326,6 +326,18 @@ def _f_coefficients_cached(count: int):
 
 def _f_coefficients(count: int):
     return _f_coefficients_cached(8 * math.ceil(count / 8))[:count]
+
+
+@functools.lru_cache(maxsize=256)
+def _f_coefficients_arb(count: int, prec: int) -> tuple:
+    """``_f_coefficients(count)`` rounded to arb at ``prec`` bits (the caller's working precision; cached: the
+    same roundings for every x, which ``_integral_x_i1_asymptotic`` otherwise repeats at each of its nodes)."""
+    saved = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        return tuple(flint.arb(c) for c in _f_coefficients(count))
+    finally:
+        flint.ctx.prec = saved
 
 
 @functools.lru_cache(maxsize=8)
