@@ -124,6 +124,19 @@ def test_end_to_end_builds_every_deliverable(built):
         assert (built / "logs" / f"{name}.log").exists()
 
 
+@pytest.mark.skipif(shutil.which("pdffonts") is None, reason="poppler's pdffonts is not installed")
+def test_the_manuscript_and_supplement_embed_every_font_as_an_outline_font(built):
+    """No font of the PDFs is a Type 3 bitmap (TeX's pk fonts, e.g. the text companion's \\textmu or \\S where
+    cm-super is missing: blurred glyphs, refused by journals) and every font is embedded."""
+    for pdf in (built / "paper" / "ms.pdf", built / "paper" / "supplement.pdf"):
+        listing = subprocess.run(["pdffonts", str(pdf)], capture_output=True, text=True, check=True).stdout
+        rows = listing.splitlines()[2:]
+        assert rows, listing
+        assert not [row for row in rows if "Type 3" in row], listing
+        # the "emb" column (third from the right of "emb sub uni object ID") says yes for every font
+        assert all(row.split()[-5] == "yes" for row in rows), listing
+
+
 def test_a_clean_build_survives_a_hard_kill(interrupted_build, dry_run_when_built):
     """The build killed while its first jobs ran left a lock: the next run stopped and named ``--unlock``; after
     it the restart completed (the interrupted jobs rebuilt) and a further run does nothing."""
