@@ -2,7 +2,7 @@
 # Make sure latexmk and the LaTeX packages of paper/ms.tex are present (Debian's TeX Live).
 set -euo pipefail
 packages="latexmk texlive-latex-base texlive-latex-recommended texlive-latex-extra texlive-fonts-recommended"
-if command -v latexmk >/dev/null 2>&1 && kpsewhich natbib.sty booktabs.sty caption.sty >/dev/null 2>&1; then
+if command -v latexmk >/dev/null 2>&1 && kpsewhich natbib.sty booktabs.sty caption.sty upgreek.sty >/dev/null 2>&1; then
   exit 0
 fi
 if [ "$(id -u)" = "0" ] && command -v apt-get >/dev/null 2>&1; then
