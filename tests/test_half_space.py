@@ -649,9 +649,9 @@ def test_same_attributes_as_the_cylinder_solution():
         ({"stick_radius": float("inf")}, "stick_radius must be finite"),
         ({}, "exactly one"),
         ({"torque": 1.0, "stick_radius": 0.5}, "exactly one"),
-        ({"torque": 1.0, "method": "published"}, "method='published' applies to model='cylinder' only"),
+        ({"torque": 1.0, "method": "published"}, "method='published' applies to models with solution methods only"),
         ({"torque": 1.0, "method": "complete"}, "model='half-space'"),
-        ({"torque": 1.0, "n_terms": 145}, "n_terms=145 applies to model='cylinder' only"),
+        ({"torque": 1.0, "n_terms": 145}, "n_terms=145 applies to models with solution methods only"),
         ({"torque": 1.0, "tolerance": -1.0}, "tolerance must lie in"),
     ],
 )
@@ -665,15 +665,15 @@ def test_bad_model_and_coordinates():
         solve(torque=1.0, model="halfspace")
     with pytest.raises(ValueError, match="model must be one of"):
         history([1.0], model=3)
-    with pytest.raises(ValueError, match="method='fast' applies to model='cylinder' only"):
+    with pytest.raises(ValueError, match="method='fast' applies to models with solution methods only"):
         history([1.0], model="half-space", method="fast")
     s = solve(torque=1.0, model="half-space")
     with pytest.raises(ValueError, match="r must be finite and lie in"):
         s.traction(1.5)
     with pytest.raises(ValueError, match="z must be finite"):
         s.stress(0.5, -1.0)
-    with pytest.raises(ValueError, match="cylinder"):
-        sample_path(history([1.0], model="half-space")[-1], -1.0)
+    with pytest.raises(ValueError, match=r"torque must lie in \[-4/3, 4/3\].*the half-spaces spin"):
+        sample_path(history([1.0], model="half-space")[-1], -1.5)
 
 
 def _cli(*args):
@@ -748,7 +748,7 @@ def test_direct_numerical_solution_of_the_slip_condition(b):
 
 def test_apparent_friction_of_a_half_space_fit():
     """kappa = f_fit / f solves kappa^2 W_hs(A / kappa) = W_cyl(A) (comparison.(C1)); > 1, falling with A."""
-    from torsional_contact.half_space.comparison import apparent_friction_ratio, energy_per_cycle
+    from torsional_contact.model_comparison import apparent_friction_ratio, energy_per_cycle
 
     ranges = np.array([2.01, 2.2, 2.4, 2.6, 2.66])
     kappa = np.array([apparent_friction_ratio(a) for a in ranges])

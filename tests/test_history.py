@@ -197,7 +197,7 @@ def test_memory_rule_matches_direct_incremental_solve_to_1e6(radii):
     (test_memory_rule_discrepancy_shrinks_with_n_terms): from the truncation of the N = 145 monotonic solutions
     (its bound in test_memory_rule_matches_direct_incremental_solve, ~5e-3) times (145/2000)^2 = 5e-3 x 5e-3.
     """
-    from torsional_contact.histories.monotonic import register
+    from torsional_contact.contact_models.cylinder import register
 
     n = 2000
     monos = [solve(stick_radius=b, method="complete", n_terms=n) for b in radii]

@@ -30,7 +30,7 @@ import rainflow
 from tolerances import EPS, ROTATION_ACCURACY, assert_close, assert_within
 
 from torsional_contact import histories as H
-from torsional_contact.histories.monotonic import point
+from torsional_contact.contact_models.cylinder import point
 from torsional_contact.histories.signal import gated_signal
 from torsional_contact.io.cli import main
 from torsional_contact.io.history_command import DEFAULT_BIN_WIDTH, STATES_IN_JSON

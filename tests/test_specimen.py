@@ -32,7 +32,10 @@ def test_values_in_any_form_give_the_same_specimen():
                  gauge_length=2 * ureg.cm)
     for other in (b, c):
         for key, value in a.as_dict().items():
-            assert_close(getattr(other, key), value, "conversion rounding", rtol=ROUNDING)
+            if key == "model":
+                assert getattr(other, key) == value == "cylinder"
+            else:
+                assert_close(getattr(other, key), value, "conversion rounding", rtol=ROUNDING)
     assert_close(a.pressure, 1000.0 / (math.pi * 0.005**2), "conversion rounding", rtol=ROUNDING)
 
 
@@ -114,8 +117,8 @@ def test_half_space_model_in_si_units(capsys):
     assert_close(state.stick_radius, reference.stick_radius * 0.005, "conversion rounding", rtol=ROUNDING)
     assert_close(state.rigid_rotation, reference.rigid_rotation * s.rotation_scale, "conversion rounding",
                  rtol=ROUNDING)
-    with pytest.raises(ValueError, match="twist is defined for model='cylinder' only"):
-        state.twist  # noqa: B018 - a property that must refuse
+    # two half-spaces have no cross-sections: the twist is the relative rotation of remote points, 2 Omega
+    assert_close(state.twist, 2.0 * reference.rigid_rotation * s.rotation_scale, "conversion rounding", rtol=ROUNDING)
     # a half-space slips at any torque: W(A) = 4 W_mono(A/2) of its own closed forms, per cycle
     states = s.history([0.0, 0.5, -0.5, 0.5], model="half-space")
     per_cycle = states[3].dissipated_energy - states[1].dissipated_energy
@@ -124,10 +127,13 @@ def test_half_space_model_in_si_units(capsys):
                  atol=2 * SUMS * states[3].dissipated_energy)
     assert s.regime(0.5, model="half-space") == "partial-slip" and s.regime(0.5) == "stick"
     assert main(["solve", "--torque", "1.8 N m", *SPECIMEN_ARGS, "--gauge-length", "20 mm", "--model", "half-space",
-                 "--json"]) == 0
+                 "--json"]) == 2
+    assert "--gauge-length does not apply to model 'half-space'" in capsys.readouterr().err
+    assert main(["solve", "--torque", "1.8 N m", *SPECIMEN_ARGS, "--model", "half-space", "--json"]) == 0
     record = json.loads(capsys.readouterr().out)
-    assert record["model"] == "half-space" and "twist" not in record
+    assert record["model"] == "half-space"
     assert_close(record["rigid_rotation"], state.rigid_rotation, "conversion rounding", rtol=ROUNDING)
+    assert_close(record["twist"], state.twist, "conversion rounding", rtol=ROUNDING)
 
 def _write(path, text):
     path.write_text(text, encoding="utf-8")

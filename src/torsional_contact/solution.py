@@ -1,6 +1,7 @@
 """The ``Solution`` of ``solve`` and the cylinders' solve (``solve_cylinder``): regimes, methods, fields anywhere.
 
-``solve`` itself (``dispatch``) picks the model: ``solve_cylinder`` here, or ``half_space``.
+``solve`` itself (``dispatch``) asks the contact model (``models``) to solve: ``solve_cylinder`` here is the
+cylinders' (``contact_models.cylinder``).
 
 Units: r, z in the cylinder radius a; T* = 2T/(f F a) (eq. 32); tractions and stresses in
 f p0 (p0 = F / (pi a^2)); displacements and slip in f p0 a / mu; omega (rigid rotation of
@@ -97,6 +98,9 @@ class Solution:
     n_terms: int | None
     tolerance: float = fields.DEFAULT_TOLERANCE
     backend: object = field(default=None, repr=False, compare=False)
+
+    #: The name of the contact model (``models.MODELS``) whose solution this is.
+    model = "cylinder"
 
     @property
     def sign(self) -> float:

@@ -41,8 +41,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import units
-from .criteria import GROSS_SLIP_TORQUE, SLIP_ONSET_TORQUE
+from . import models, units
+from .validation import TORQUE_TOLERANCE
 
 __all__ = ["Specimen", "PhysicalState", "PhysicalSignal", "SI_UNITS"]
 
@@ -86,8 +86,14 @@ class Specimen:
         Shear modulus mu = G (Pa) of both cylinders, > 0.
     gauge_length : float, quantity or str, optional
         Distance L (m) between the two cross-sections whose relative rotation is the
-        measured ``twist``, symmetric about the interface; >= 0.  Without it, states have
-        no ``twist``.
+        measured ``twist``, symmetric about the interface; >= 0.  Without it, states of the
+        cylinders have no ``twist``.  Models whose bodies are not shafts (the half-space models)
+        take none: their twist is the relative rotation of remote points.
+    model : str or ContactModel, optional
+        The contact model (``models``; default "cylinder"): what is pressed together, under which
+        pressure.  ``radius`` is then the contact radius, ``normal_force`` the load, and the
+        pressure scale p-bar = F / (pi a^2) the mean contact pressure.  The methods' own ``model=``
+        overrides it for one call.
 
     Raises
     ------
@@ -101,6 +107,7 @@ class Specimen:
     friction: float
     shear_modulus: float
     gauge_length: float | None = None
+    model: object = None
 
     def __post_init__(self):
         set_ = object.__setattr__
@@ -110,6 +117,21 @@ class Specimen:
         set_(self, "shear_modulus", units.positive_si("shear_modulus", self.shear_modulus, "pressure"))
         if self.gauge_length is not None:
             set_(self, "gauge_length", units.positive_si("gauge_length", self.gauge_length, "length", allow_zero=True))
+        contact = models.get(self.model)
+        set_(self, "model", contact.name)
+        set_(self, "_contact", contact)
+        if self.gauge_length is not None and not contact.shaft:
+            raise ValueError(f"gauge_length does not apply to model {contact.name!r}: {contact.bodies} are not shafts "
+                             "(their twist is the relative rotation of remote points; leave it out)")
+
+    @property
+    def contact(self):
+        """The contact model object (``models``)."""
+        return self._contact
+
+    def _model(self, model):
+        """The model of one call: ``model`` if given, else the specimen's."""
+        return self._contact if model is None else models.get(model)
 
     # ---------------------------------------------------------------- scales
     @property
@@ -124,13 +146,13 @@ class Specimen:
 
     @property
     def slip_onset_torque(self) -> float:
-        """Torque at which slip starts, T* = 1 (N m)."""
-        return SLIP_ONSET_TORQUE * self.torque_scale
+        """Torque at which slip starts (N m): the model's T* onset (1 for the cylinders) times f F a / 2."""
+        return self._contact.slip_onset_torque * self.torque_scale
 
     @property
     def gross_slip_torque(self) -> float:
-        """Torque at which the cylinders spin, T* = 4/3: 2 f F a / 3 (N m)."""
-        return GROSS_SLIP_TORQUE * self.torque_scale
+        """Torque at which the bodies spin (N m): the model's gross-slip T* (4/3 for the cylinders: 2 f F a / 3)."""
+        return self._contact.gross_slip_torque * self.torque_scale
 
     @property
     def stress_scale(self) -> float:
@@ -160,7 +182,7 @@ class Specimen:
 
     def as_dict(self) -> dict:
         return {"radius": self.radius, "normal_force": self.normal_force, "friction": self.friction,
-                "shear_modulus": self.shear_modulus, "gauge_length": self.gauge_length}
+                "shear_modulus": self.shear_modulus, "gauge_length": self.gauge_length, "model": self.model}
 
     # ---------------------------------------------------------------- conversions
     def normalized_torque(self, torque, name: str = "torque"):
@@ -169,28 +191,36 @@ class Specimen:
             return units.si_value(name, torque, "torque") / self.torque_scale
         return units.si_array(name, torque, "torque") / self.torque_scale
 
-    def _checked_torque(self, name: str, torque) -> float:
+    def _checked_torque(self, name: str, torque, model=None) -> float:
+        contact = self._model(model)
         t = self.normalized_torque(torque, name)
         if not math.isfinite(t):
             raise ValueError(f"{name} must be a finite torque (N m), got {torque!r}")
-        if abs(t) > GROSS_SLIP_TORQUE * (1 + 4 * np.finfo(float).eps):
+        gross = contact.gross_slip_torque
+        if abs(t) > gross * (1 + TORQUE_TOLERANCE):
+            limit = gross * self.torque_scale
             raise ValueError(
-                f"{name} must lie in [-{self.gross_slip_torque:.6g}, {self.gross_slip_torque:.6g}] N m (|T*| <= 4/3, "
-                f"T_gross = 2 f F a / 3), got {torque!r} (T* = {t:.6g}): beyond it the cylinders spin, there is no "
-                "static solution")
-        return max(-GROSS_SLIP_TORQUE, min(GROSS_SLIP_TORQUE, t))
+                f"{name} must lie in [-{limit:.6g}, {limit:.6g}] N m (|T*| <= {contact.gross_slip_text}, the "
+                f"gross-slip torque of model {contact.name!r}), got {torque!r} (T* = {t:.6g}): beyond it "
+                f"{contact.bodies} spin, there is no static solution")
+        return max(-gross, min(gross, t))
 
-    def twist(self, torque_star, rigid_rotation):
-        """Twist (rad) over the gauge length: (f p0 / mu)(T* L / a + 2 omega) (module docstring)."""
-        if self.gauge_length is None:
+    def twist(self, torque_star, rigid_rotation, model=None):
+        """Twist (rad): (f p0 / mu) times the model's ``contact_twist`` (module docstring).
+
+        Cylinders: over the gauge length, (f p0 / mu)(T* L / a + 2 omega); half-space models: the
+        relative rotation of remote points, (f p-bar / mu) n Omega (n elastic bodies).
+        """
+        contact = self._model(model)
+        if contact.shaft and self.gauge_length is None:
             raise ValueError("the twist needs the specimen's gauge_length (distance between the two cross-sections)")
-        return self.rotation_scale * (np.asarray(torque_star) * self.gauge_length / self.radius
-                                      + 2.0 * np.asarray(rigid_rotation))
+        length = self.gauge_length / self.radius if contact.shaft else None
+        return self.rotation_scale * contact.contact_twist(torque_star, rigid_rotation, length)
 
     def shaft_compliance(self) -> float:
         """Twist per torque of the elastic shaft over the gauge length, L / (mu J), J = pi a^4 / 2 (rad / (N m))."""
         if self.gauge_length is None:
-            raise ValueError("the shaft compliance needs the specimen's gauge_length")
+            raise ValueError("the shaft compliance needs the specimen's gauge_length (cylinders)")
         return self.gauge_length / (self.shear_modulus * 0.5 * math.pi * self.radius**4)
 
     # ---------------------------------------------------------------- solutions
@@ -198,26 +228,26 @@ class Specimen:
               model=None) -> PhysicalState:
         """The state for a torque (N m) or a stick radius (a length, 0 <= c <= radius): exactly one of the two.
 
-        ``model``: "cylinder" (default) or "half-space" (``models``), as for ``solve``.
+        ``model``: a name of ``models.MODELS`` or a model object (default: the specimen's), as for ``solve``.
 
         Raises ValueError naming the argument: both or neither, a wrong dimension, |T| above
-        the gross-slip torque 2 f F a / 3 (the cylinders spin), a stick radius outside [0, a].
+        the model's gross-slip torque (2 f F a / 3 for the cylinders: they spin), a stick radius
+        outside [0, a].
         """
-        from .dispatch import solve
-
+        contact = self._model(model)
         if (torque is None) == (stick_radius is None):
             raise ValueError("give exactly one of torque (N m) and stick_radius (a length in [0, radius])")
         if torque is not None:
-            normalized = solve(torque=self._checked_torque("torque", torque), method=method, n_terms=n_terms,
-                               tolerance=tolerance, model=model)
+            normalized = contact.solve(torque=self._checked_torque("torque", torque, contact), method=method,
+                                       n_terms=n_terms, tolerance=tolerance)
         else:
             c = units.si_value("stick_radius", stick_radius, "length")
             if not math.isfinite(c) or not 0.0 <= c <= self.radius:
                 raise ValueError(f"stick_radius must lie in [0, {self.radius:g}] m (0 to the radius), got "
                                  f"{stick_radius!r}")
-            normalized = solve(stick_radius=c / self.radius, method=method, n_terms=n_terms, tolerance=tolerance,
-                               model=model)
-        return PhysicalState(self, normalized)
+            normalized = contact.solve(stick_radius=c / self.radius, method=method, n_terms=n_terms,
+                                       tolerance=tolerance)
+        return PhysicalState(self, normalized, contact)
 
     def history(self, torques, *, method=None, n_terms=None, model=None) -> tuple[PhysicalState, ...]:
         """States after each step of a torque history (N m) from the virgin interface (memory rules).
@@ -226,22 +256,26 @@ class Specimen:
         """
         from .histories import history
 
-        values = self._torque_list("torques", torques)
-        return tuple(PhysicalState(self, s) for s in history(values, method=method, n_terms=n_terms, model=model))
+        contact = self._model(model)
+        values = self._torque_list("torques", torques, contact)
+        return tuple(PhysicalState(self, s, contact) for s in history(values, method=method, n_terms=n_terms,
+                                                                      model=contact))
 
     def signal(self, torques, *, method=None, n_terms=None, model=None) -> PhysicalSignal:
         """A long sampled torque signal (N m): turning points, closed cycles and energies (``histories.signal``)."""
         from .histories import analyse_signal
 
-        values = np.asarray(self._torque_list("torques", torques))
-        return PhysicalSignal(self, analyse_signal(values, method=method, n_terms=n_terms, model=model,
-                                                               name="torques"), values)
+        contact = self._model(model)
+        values = np.asarray(self._torque_list("torques", torques, contact))
+        return PhysicalSignal(self, analyse_signal(values, method=method, n_terms=n_terms, model=contact,
+                                                   name="torques"), values, contact)
 
-    def _torque_list(self, name: str, torques) -> list[float]:
+    def _torque_list(self, name: str, torques, contact) -> list[float]:
         values = units.si_array(name, torques, "torque") / self.torque_scale
         if values.size == 0:
             raise ValueError(f"{name} must contain at least one torque (N m)")
-        return [self._checked_torque(f"{name}[{i}]", float(v) * self.torque_scale) for i, v in enumerate(values)]
+        return [self._checked_torque(f"{name}[{i}]", float(v) * self.torque_scale, contact)
+                for i, v in enumerate(values)]
 
     # ---------------------------------------------------------------- cyclic loading
     def regime(self, torque_amplitude, *, model=None) -> str:
@@ -249,31 +283,29 @@ class Specimen:
 
         Cylinders (default): "stick" (T_a <= f F a / 2: the interface shakes down to full
         stick), "partial-slip" (cyclic slip of an annulus) or "gross-slip" (T_a >= 2 f F a / 3:
-        the cylinders spin).  ``model="half-space"``: an annulus slips at any T_a > 0.
+        the cylinders spin); every model by its ``ContactModel.regime`` (the half-space models slip
+        at any T_a > 0).
         """
-        from .models import CYLINDER, validated
-
-        model = validated(model)
+        contact = self._model(model)
         t = abs(self.normalized_torque(torque_amplitude, "torque_amplitude"))
         if not math.isfinite(t):
             raise ValueError(f"torque_amplitude must be a finite torque (N m), got {torque_amplitude!r}")
-        onset = SLIP_ONSET_TORQUE if model == CYLINDER else 0.0
-        return "stick" if t <= onset else "gross-slip" if t >= GROSS_SLIP_TORQUE else "partial-slip"
+        return contact.regime(t)
 
     def energy_per_cycle(self, torque_amplitude, *, method=None, n_terms=None, model=None) -> float:
         """Energy (J) dissipated per cycle of a torque between -T_a and T_a: W(2 T*_a) (f p0)^2 a^3 / mu.
 
-        Zero for T_a at or below the slip onset; W(A) = 4 W_mono(A/2) (``histories.memory``,
-        rule 5).  Raises ValueError at or beyond the gross-slip torque (infinite: the
-        cylinders spin).
+        Zero for T_a at or below the slip onset; W(A) = 4 W_mono(A/2) (the model's
+        ``ContactModel.energy_per_cycle``).  Raises ValueError at or beyond the gross-slip torque
+        (infinite: the bodies spin).
         """
-        from .histories.monotonic import monotonic_model
-
-        t = self._checked_torque("torque_amplitude", torque_amplitude)
-        if abs(t) >= GROSS_SLIP_TORQUE:
-            raise ValueError(f"torque_amplitude must be below the gross-slip torque {self.gross_slip_torque:.6g} N m "
+        contact = self._model(model)
+        t = self._checked_torque("torque_amplitude", torque_amplitude, contact)
+        if abs(t) >= contact.gross_slip_torque:
+            limit = contact.gross_slip_torque * self.torque_scale
+            raise ValueError(f"torque_amplitude must be below the gross-slip torque {limit:.6g} N m "
                              f"for a finite energy per cycle, got {torque_amplitude!r}")
-        return float(4.0 * monotonic_model(model, method, n_terms).point(abs(t))[2]) * self.energy_scale
+        return float(contact.energy_per_cycle(2.0 * abs(t), method=method, n_terms=n_terms)) * self.energy_scale
 
 
 def _scaled(value, factor):
@@ -291,6 +323,11 @@ class PhysicalState:
 
     specimen: Specimen
     normalized: object = field(repr=False)
+    contact: object = field(default=None, repr=False)
+
+    def __post_init__(self):
+        if self.contact is None:
+            object.__setattr__(self, "contact", self.specimen.contact)
 
     @property
     def torque(self) -> float:
@@ -304,17 +341,15 @@ class PhysicalState:
 
     @property
     def rigid_rotation(self) -> float:
-        """omega f p0 / mu (rad): rotation of each cylinder far from the interface beyond the uniform twist."""
+        """omega f p0 / mu (rad): rotation of one body's stick zone relative to its remote points (cylinders: of
+        each cylinder far from the interface beyond the uniform twist)."""
         return self.normalized.rigid_rotation * self.specimen.rotation_scale
 
     @property
     def twist(self) -> float:
-        """Twist over the gauge length (rad) of the cylinders; ValueError without a gauge length, and for the
-        half-space model (a half-space has no cross-sections: its ``rigid_rotation`` is the far-field rotation)."""
-        if getattr(self.normalized, "model", "cylinder") != "cylinder":
-            raise ValueError("twist is defined for model='cylinder' only (two half-spaces have no cross-sections at a "
-                             "gauge length; use rigid_rotation, the far-field rotation of each body)")
-        return float(self.specimen.twist(self.normalized.torque, self.normalized.rigid_rotation))
+        """The twist a rig measures (rad): over the gauge length for the cylinders (ValueError without one), the
+        relative rotation of remote points for the half-space models (``Specimen.twist``)."""
+        return float(self.specimen.twist(self.normalized.torque, self.normalized.rigid_rotation, self.contact))
 
     @property
     def regime(self) -> str:
@@ -363,10 +398,10 @@ class PhysicalState:
 
     def as_dict(self) -> dict:
         """SI values (keys of ``SI_UNITS``), ``units``, and the normalised state under ``normalized``."""
-        return physical_record(self.normalized.as_dict(), self.specimen)
+        return physical_record(self.normalized.as_dict(), self.specimen, self.contact)
 
 
-def physical_record(record: dict, specimen: Specimen) -> dict:
+def physical_record(record: dict, specimen: Specimen, contact=None) -> dict:
     """A normalised JSON record (``as_dict`` of a state, a history summary) in SI units.
 
     Keys of ``SI_UNITS`` found at any depth are converted; a state with ``torque`` and
@@ -374,7 +409,7 @@ def physical_record(record: dict, specimen: Specimen) -> dict:
     ``dissipated_energy`` inside a list of cycles gains ``energy``.  The result has a
     ``units`` object for the keys it converted and the input under ``normalized``.
     """
-    converted, seen = _convert(record, specimen, set())
+    converted, seen = _convert(record, specimen, set(), contact=specimen.contact if contact is None else contact)
     out = {**converted, "units": {k: SI_UNITS[k] for k in SI_UNITS if k in seen}}
     out["normalized"] = record
     return out
@@ -390,9 +425,9 @@ def _factor(key: str, specimen: Specimen) -> float:
             "slip": specimen.displacement_scale}[key]
 
 
-def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False):
+def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False, contact=None):
     if isinstance(value, list):
-        items = [_convert(v, specimen, seen, in_cycles)[0] for v in value]
+        items = [_convert(v, specimen, seen, in_cycles, contact)[0] for v in value]
         return items, seen
     if not isinstance(value, dict):
         return value, seen
@@ -409,15 +444,15 @@ def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False):
         elif key == "regime" or not isinstance(item, (dict, list)):
             out[key] = item
         else:
-            out[key] = _convert(item, specimen, seen, in_cycles or key == "cycles")[0]
+            out[key] = _convert(item, specimen, seen, in_cycles or key == "cycles", contact)[0]
     if in_cycles and "dissipated_energy" in out and "energy" not in out:
         out["energy"] = out["dissipated_energy"]
         seen.add("energy")
-    if specimen.gauge_length is not None and "torque" in value and "rigid_rotation" in value and "twist" not in out \
-            and value.get("model", "cylinder") == "cylinder":  # a half-space has no cross-sections
+    has_twist = specimen.gauge_length is not None or not contact.shaft
+    if has_twist and "torque" in value and "rigid_rotation" in value and "twist" not in out:
         torque, omega = value["torque"], value["rigid_rotation"]
         if isinstance(torque, (int, float)) and isinstance(omega, (int, float)) and not isinstance(torque, bool):
-            out["twist"] = float(specimen.twist(torque, omega))
+            out["twist"] = float(specimen.twist(torque, omega, contact))
             seen.add("twist")
         elif isinstance(torque, (int, float)) and omega is None:  # spinning: unbounded
             out["twist"] = None
@@ -432,6 +467,11 @@ class PhysicalSignal:
     specimen: Specimen
     normalized: object = field(repr=False)
     torque_star: np.ndarray = field(repr=False, default=None)
+    contact: object = field(default=None, repr=False)
+
+    def __post_init__(self):
+        if self.contact is None:
+            object.__setattr__(self, "contact", self.specimen.contact)
 
     @property
     def dissipated_energy(self) -> float:
@@ -450,6 +490,6 @@ class PhysicalSignal:
         omega, energy = self.normalized.sample_values()
         s = self.specimen
         out = {"rigid_rotation": omega * s.rotation_scale, "dissipated_energy": energy * s.energy_scale}
-        if s.gauge_length is not None:
-            out["twist"] = s.twist(self.torque_star, omega)
+        if s.gauge_length is not None or not self.contact.shaft:
+            out["twist"] = s.twist(self.torque_star, omega, self.contact)
         return out

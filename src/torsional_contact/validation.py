@@ -92,42 +92,54 @@ def coordinates(r, z=None, *, names=("r", "z")):
     return r, z
 
 
-def torque(name: str, value) -> float:
-    """``value`` as a finite T* in [-4/3, 4/3] (rounding beyond 4/3 clipped), or ValueError naming ``name``."""
+def torque(name: str, value, *, limit: float = GROSS_SLIP_TORQUE, limit_text: str = "4/3",
+           spinning: str = "the cylinders spin") -> float:
+    """``value`` as a finite T* in [-limit, limit] (a rounding of a few ulp beyond ``limit`` clipped to it), or
+    ValueError naming ``name``.
+
+    ``limit`` is the gross-slip torque of the contact model (4/3 for the cylinders, written ``limit_text`` in
+    messages); ``spinning`` says what happens beyond it.  Values within ``TORQUE_TOLERANCE`` (4 ulp) past the
+    limit are taken as the limit itself: the rounding of a torque computed as, e.g., 2 x (2/3).
+    """
     if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
-        raise ValueError(f"{name} must be a real number in [-4/3, 4/3], got {value!r}")
+        raise ValueError(f"{name} must be a real number in [-{limit_text}, {limit_text}], got {value!r}")
     value = float(value)
     if not math.isfinite(value):
-        raise ValueError(f"{name} must be finite and lie in [-4/3, 4/3], got {value!r}")
-    if abs(value) > GROSS_SLIP_TORQUE * (1 + TORQUE_TOLERANCE):
+        raise ValueError(f"{name} must be finite and lie in [-{limit_text}, {limit_text}], got {value!r}")
+    if abs(value) > limit * (1 + TORQUE_TOLERANCE):
+        side = "above" if value > 0 else "below"
+        bound = limit_text if value > 0 else f"-{limit_text}"
         raise ValueError(
-            f"{name} must lie in [-4/3, 4/3], got {value!r}: above 4/3 the cylinders spin "
+            f"{name} must lie in [-{limit_text}, {limit_text}], got {value!r}: {side} {bound} {spinning} "
             "(gross slip), there is no static solution"
         )
-    return max(-GROSS_SLIP_TORQUE, min(GROSS_SLIP_TORQUE, value))
+    return max(-limit, min(limit, value))
 
 
-def torque_sequence(name: str, values) -> list[float]:
-    """``values`` as a non-empty list of finite torques in [-4/3, 4/3], or ValueError naming ``name[i]``.
+def torque_sequence(name: str, values, checked=None) -> list[float]:
+    """``values`` as a non-empty list of finite torques, or ValueError naming ``name[i]``.
 
-    A flat sequence or 1-d array only: a nested one (e.g. [[0, 1.2], [1.3, 0]]) is refused,
-    not flattened, since its order of turning points would be a guess.
+    ``checked(name, value)`` checks one torque (default ``torque``: the cylinders' [-4/3, 4/3]; a contact
+    model's ``checked_torque`` for its own gross-slip torque).  A flat sequence or 1-d array only: a nested
+    one (e.g. [[0, 1.2], [1.3, 0]]) is refused, not flattened, since its order of turning points would be a
+    guess.
     """
+    checked = torque if checked is None else checked
     if isinstance(values, (str, bytes)) or np.ndim(values) == 0 and not hasattr(values, "__iter__"):
-        raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}")
+        raise ValueError(f"{name} must be a sequence of torques (T*), got {values!r}")
     if isinstance(values, np.ndarray):
         if values.ndim != 1:
             raise ValueError(
-                f"{name} must be a flat (1-d) sequence of torques in [-4/3, 4/3], got shape {values.shape}")
+                f"{name} must be a flat (1-d) sequence of torques (T*), got shape {values.shape}")
         items = list(values)
     else:
         try:
             items = list(values)
         except TypeError as exc:  # not iterable
-            raise ValueError(f"{name} must be a sequence of torques in [-4/3, 4/3], got {values!r}") from exc
+            raise ValueError(f"{name} must be a sequence of torques (T*), got {values!r}") from exc
     if not items:
-        raise ValueError(f"{name} must contain at least one torque in [-4/3, 4/3]")
+        raise ValueError(f"{name} must contain at least one torque (T*)")
     for i, v in enumerate(items):
         if isinstance(v, (str, bytes)) or np.ndim(v) != 0:
-            raise ValueError(f"{name}[{i}] must be a real number in [-4/3, 4/3] (a flat sequence), got {v!r}")
-    return [torque(f"{name}[{i}]", v) for i, v in enumerate(items)]
+            raise ValueError(f"{name}[{i}] must be a real number (T*; a flat sequence), got {v!r}")
+    return [checked(f"{name}[{i}]", v) for i, v in enumerate(items)]

@@ -155,7 +155,7 @@ def main():
             t = time.perf_counter()
             H.history(torques[: a.baseline_points], method="complete", n_terms=145)
             baseline.append((time.perf_counter() - t) / a.baseline_points)
-            M = importlib.import_module("torsional_contact.histories.monotonic")
+            M = importlib.import_module("torsional_contact.contact_models.cylinder")
             M._SOLUTIONS.clear()  # noqa: SLF001 - a cold cache for every baseline run
             M._series_point.cache_clear()  # noqa: SLF001
     cli = {case: {key: summary([r[key] for r in runs]) for key in runs[0]} for case, runs in processes.items()}

@@ -12,7 +12,7 @@ from _plotting import figure_parser, save_figure, subplots, use_style
 
 from torsional_contact.curves import monotonic_curves
 from torsional_contact.half_space import closed_form as hs
-from torsional_contact.half_space.comparison import apparent_friction_ratio
+from torsional_contact.model_comparison import apparent_friction_ratio
 
 
 def main():

@@ -13,9 +13,9 @@ metadata, a LaTeX table and LaTeX macros.
 import argparse
 import math
 
+from torsional_contact.contact_models.cylinder import point
 from torsional_contact.half_space import closed_form as hs
-from torsional_contact.half_space.comparison import apparent_friction_ratio, energy_per_cycle
-from torsional_contact.histories.monotonic import point
+from torsional_contact.model_comparison import apparent_friction_ratio, energy_per_cycle
 from torsional_contact.provenance import write_json, write_macros, write_text
 from torsional_contact.typeset import sci
 

@@ -6,10 +6,10 @@ derivation (Jaeger's superposition of Reissner-Sagoci rigid-disc rotations) and 
 forms (H1)-(H14) are in ``half_space.closed_form`` (the interface fields (H7)-(H9) in
 ``half_space.interface``); the fields in the bodies (a verified
 quadrature of the superposition) in ``half_space.fields``; the state classes and the
-monotonic interface of the memory rules in ``half_space.model``.
+contact model (``UniformHalfSpace``, entry "half-space" of ``models.MODELS``) in ``half_space.model``.
 """
 
 from . import closed_form
-from .model import MODEL, HalfSpaceMonotonic, HalfSpaceSolution, HalfSpaceState, solve_half_space
+from .model import MODEL, UNIFORM_HALF_SPACE, HalfSpaceSolution, HalfSpaceState, UniformHalfSpace
 
-__all__ = ["MODEL", "closed_form", "HalfSpaceMonotonic", "HalfSpaceSolution", "HalfSpaceState", "solve_half_space"]
+__all__ = ["MODEL", "closed_form", "UNIFORM_HALF_SPACE", "UniformHalfSpace", "HalfSpaceSolution", "HalfSpaceState"]

@@ -1,16 +1,17 @@
-"""The half-space model behind ``solve(..., model="half-space")`` and ``history(..., model="half-space")``.
+"""The uniform-pressure half-space model: ``UNIFORM_HALF_SPACE``, the entry "half-space" of ``models.MODELS``.
 
-Units: those of the package (docs/conventions.md).  Closed forms in ``half_space.closed_form``
-(equations (H1)-(H14)), fields in the bodies in ``half_space.fields``.
+Two elastically similar half-spaces pressed together over the disc r < a by a uniform pressure
+p-bar = F/(pi a^2), twisted against each other.  Units: those of the package (docs/conventions.md).
+Closed forms in ``half_space.closed_form`` (equations (H1)-(H14)), fields in the bodies in
+``half_space.fields``.
 
 * ``HalfSpaceState``: the positive-torque state for one stick radius, with the interface
   of ``backends`` (stick_radius, torque, rigid_rotation, traction, displacement, sigma_rt,
   metadata).
 * ``HalfSpaceSolution``: a ``solution.Solution`` (same attributes) whose fields off the
   interface come from ``half_space.fields`` instead of the cylinders' Dini series.
-* ``solve_half_space``: what ``solve`` calls for the half-space model.
-* ``HalfSpaceMonotonic``: the monotonic solution as the memory rules use it (``point``,
-  ``points``, ``solution``), the half-space sibling of ``histories.monotonic.CylinderMonotonic``.
+* ``UniformHalfSpace`` (the object ``UNIFORM_HALF_SPACE``): the contact model (``contact_models.base``).
+  Its monotonic numbers b(tau), Omega(tau), W_mono(tau) are the closed forms (H5), (H6), (H11).
 
 Regimes: "stick" only at T* = 0 (b = 1), "partial-slip" for 0 < |T*| < 4/3 (the half-space
 slips at any torque), "gross-slip" at |T*| = 4/3 (b = 0, Omega = +inf).
@@ -18,19 +19,20 @@ slips at any torque), "gross-slip" at |T*| = 4/3 (b = 0, Omega = +inf).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
-from .. import fields as cylinder_fields
-from .. import validation
+from ..contact_models.base import FIELDS, ContactModel
 from ..criteria import GROSS_SLIP_TORQUE
-from ..models import HALF_SPACE as MODEL
-from ..models import validated
 from ..solution import Solution, _flat_points
+from ..validation import TORQUE_TOLERANCE
 from . import closed_form, fields, interface
 
-__all__ = ["MODEL", "HalfSpaceState", "HalfSpaceSolution", "solve_half_space", "HalfSpaceMonotonic"]
+__all__ = ["MODEL", "HalfSpaceState", "HalfSpaceSolution", "UniformHalfSpace", "UNIFORM_HALF_SPACE"]
+
+#: The model's name in ``models.MODELS``.
+MODEL = "half-space"
 
 
 
@@ -106,13 +108,6 @@ class HalfSpaceSolution(Solution):
         return record
 
 
-def _validated_options(method, n_terms, tolerance) -> float:
-    """The half-space model has no method and no n_terms; ``tolerance`` as for the cylinders."""
-    validated(MODEL, method, n_terms)
-    return validation.real_number(
-        "tolerance", cylinder_fields.DEFAULT_TOLERANCE if tolerance is None else tolerance, 0.0, 1.0)
-
-
 def _solution(b: float, torque: float, sign: float, regime: str, tolerance: float) -> HalfSpaceSolution:
     omega = float(closed_form.rigid_rotation(b))
     backend = HalfSpaceState(stick_radius=b, torque=torque, rigid_rotation=omega)
@@ -121,70 +116,39 @@ def _solution(b: float, torque: float, sign: float, regime: str, tolerance: floa
         n_terms=None, tolerance=tolerance, backend=backend)
 
 
-def solve_half_space(stick_radius=None, torque=None, *, method=None, n_terms=None, tolerance=None) -> HalfSpaceSolution:
-    """The half-space contact for a stick radius or a torque (see ``solve``; same arguments and errors).
+class UniformHalfSpace(ContactModel):
+    """Two elastically similar half-spaces under a uniform pressure over r < a (module docstring).
 
-    Raises
-    ------
-    ValueError
-        As ``solve`` for the stick radius, the torque (|T*| > 4/3: the bodies spin) and the
-        tolerance; for a ``method`` or ``n_terms`` (they apply to the cylinder model only).
+    ``rigid_rotation`` is Omega = arccosh(1/b)/2 (f p-bar / mu), the far-field rotation of the
+    upper body relative to the stick disc (the relative twist of remote points is 2 Omega);
+    slip starts at any torque, the bodies spin at T* = 4/3.
     """
-    tolerance = _validated_options(method, n_terms, tolerance)
-    if (stick_radius is None) == (torque is None):
-        raise ValueError("give exactly one of stick_radius (in [0, 1]) and torque (in [-4/3, 4/3])")
-    if stick_radius is not None:
-        b = validation.real_number("stick_radius", stick_radius, 0.0, 1.0)
+
+    name = MODEL
+    description = "two elastically similar half-spaces, uniform pressure over the contact disc"
+    bodies = "the half-spaces"
+    slip_onset_torque = 0.0
+    gross_slip_torque = GROSS_SLIP_TORQUE
+    gross_slip_text = "4/3"
+    elastic_bodies = 2
+    shaft = False
+    fields = FIELDS
+
+    def solution_at_radius(self, b: float, tolerance: float) -> HalfSpaceSolution:
         regime = "stick" if b == 1.0 else "gross-slip" if b == 0.0 else "partial-slip"
         return _solution(b, float(closed_form.torque(b)), 1.0, regime, tolerance)
-    try:
-        t = validation.torque("torque", torque)
-    except ValueError as error:  # the same message, about these bodies
-        raise ValueError(str(error).replace("the cylinders spin", "the half-spaces spin")) from None
-    magnitude, sign = abs(t), (-1.0 if t < 0 else 1.0)
-    if magnitude == 0.0:
-        return _solution(1.0, 0.0, 1.0, "stick", tolerance)
-    if magnitude >= GROSS_SLIP_TORQUE * (1 - validation.TORQUE_TOLERANCE):
-        return _solution(0.0, GROSS_SLIP_TORQUE, sign, "gross-slip", tolerance)
-    b = float(closed_form.stick_radius(magnitude))
-    return _solution(b, magnitude, sign, "partial-slip", tolerance)
+
+    def solution_at_torque(self, magnitude: float, sign: float, tolerance: float) -> HalfSpaceSolution:
+        if magnitude == 0.0:
+            return _solution(1.0, 0.0, 1.0, "stick", tolerance)
+        if magnitude >= GROSS_SLIP_TORQUE * (1 - TORQUE_TOLERANCE):
+            return _solution(0.0, GROSS_SLIP_TORQUE, sign, "gross-slip", tolerance)
+        return _solution(float(closed_form.stick_radius(magnitude)), magnitude, sign, "partial-slip", tolerance)
+
+    def monotonic_points(self, tau):
+        """(H5), (H6), (H11): b, Omega_m, W_mono for an array of 0 <= tau <= 4/3."""
+        return closed_form.points(np.asarray(tau, dtype=float))
 
 
-_CACHE_SIZE = 4096
-
-
-@dataclass(frozen=True)
-class HalfSpaceMonotonic:
-    """The monotonic solution mono(tau) of the half-space, as the memory rules use it.
-
-    The interface every model offers to ``histories`` (``histories.monotonic.monotonic_model`` picks it):
-    ``point(tau)`` -> (b, Omega_m, W_mono), ``points(tau)`` the same for arrays, ``solution(tau)``
-    the full state (cached), and the attributes ``model``, ``method``, ``n_terms``.
-    """
-
-    model: str = MODEL
-    method: None = None
-    n_terms: None = None
-    _solutions: dict = field(default_factory=dict, repr=False, compare=False)
-
-    def point(self, tau: float) -> tuple[float, float, float]:
-        """(b, Omega_m, W_mono) at 0 <= tau <= 4/3."""
-        return closed_form.state(min(max(float(tau), 0.0), GROSS_SLIP_TORQUE))
-
-    def points(self, tau):
-        """Arrays b, Omega_m, W_mono for an array of 0 <= tau <= 4/3."""
-        tau = np.clip(np.asarray(tau, dtype=float), 0.0, GROSS_SLIP_TORQUE)
-        b, omega, work = closed_form.points(tau.ravel())
-        return b.reshape(tau.shape), omega.reshape(tau.shape), work.reshape(tau.shape)
-
-    def solution(self, tau: float) -> HalfSpaceSolution:
-        """mono(tau) for 0 <= tau <= 4/3 (cached)."""
-        tau = validation.torque("tau", tau)
-        if tau < 0:
-            raise ValueError(f"tau must lie in [0, 4/3], got {tau!r}")
-        if tau not in self._solutions:
-            if len(self._solutions) >= _CACHE_SIZE:
-                self._solutions.clear()
-            self._solutions[tau] = solve_half_space(torque=tau)
-        return self._solutions[tau]
-
+#: The model object of the table ``models.MODELS``.
+UNIFORM_HALF_SPACE = UniformHalfSpace()

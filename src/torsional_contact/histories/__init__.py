@@ -1,7 +1,7 @@
 """Torque histories: the Cattaneo-Mindlin / Masing memory rules on the monotonic solution.
 
-``memory`` (states, reversals, the rainflow stack, dissipated energy), ``monotonic`` (the
-monotonic solution as the rules use it), ``signal`` (long sampled signals as arrays),
+``memory`` (states, reversals, the rainflow stack, dissipated energy; the monotonic solution of each
+contact model comes from its ``ContactModel.monotonic``), ``signal`` (long sampled signals as arrays),
 ``loops`` (sampled branches, hysteresis loops, compliance, the unloading experiment of
 Fig. 5) and ``energy`` (frictional work and dissipation).  Default method: the
 Abel-Fredholm method (``fast``) through the interpolants of ``curves``.

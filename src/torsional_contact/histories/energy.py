@@ -50,14 +50,11 @@ from collections.abc import Sequence
 import numpy as np
 from scipy import special
 
-from .. import validation
+from .. import models, validation
 from ..backends import METHODS, Series
-from ..criteria import GROSS_SLIP_TORQUE
-from ..curves import monotonic_curves
 from ..quadrature import gauss_legendre_panels
 from ..special.zeros import bessel_j2_zeros
 from .memory import InterfaceState
-from .monotonic import point, resolve
 
 __all__ = [
     "slip_increments",
@@ -164,55 +161,57 @@ def frictional_work(states: Sequence[InterfaceState]) -> float:
     return 2.0 * math.pi * total
 
 
-def loading_work(tau, *, method=None, n_terms=None) -> float:
-    """W_mono(tau) = 2 pi int_b^1 s_m(r; tau) r dr: work against friction of a monotonic loading to tau.
+def loading_work(tau, *, method=None, n_terms=None, model=None) -> float:
+    """W_mono(tau) = 2 pi int_b^1 q s_m(r; tau) r dr: work against friction of a monotonic loading to tau.
 
-    Units (f p0)^2 a^3 / mu; 0 for tau <= 1, +inf at tau = 4/3 (spinning).  Default method:
-    the interpolant of ``curves`` (eq. (W2) of ``curves.work``); weak forms: quadrature of
-    their slip.
+    Units (f p0)^2 a^3 / mu; for the cylinders 0 for tau <= 1, +inf at tau = 4/3 (spinning).  The
+    contact model's own (``ContactModel.loading_work``): for the cylinders' default method the
+    interpolant of ``curves`` (eq. (W2) of ``curves.work``); weak forms: quadrature of their slip.
 
     Raises
     ------
     ValueError
-        If tau is not finite or outside [0, 4/3].
+        If tau is not finite or outside [0, gross-slip torque].
     """
-    value = validation.real_number("tau", tau, 0.0, GROSS_SLIP_TORQUE)
-    return point(value, *resolve(method, n_terms))[2]
+    return models.get(model).loading_work(tau, method=method, n_terms=n_terms)
 
 
-def dissipation_per_cycle(torque_range, *, method=None, n_terms=None) -> float:
-    """W(A) = 8 pi int_0^1 s_m(r; A/2) r dr = 4 W_mono(A/2) ((f p0)^2 a^3 / mu), zero for A <= 2.
+def dissipation_per_cycle(torque_range, *, method=None, n_terms=None, model=None) -> float:
+    """W(A) = 4 W_mono(A/2) ((f p0)^2 a^3 / mu): the model's ``ContactModel.energy_per_cycle``.
 
     The energy dissipated per closed loop of range A (any mean torque): on each half
     cycle the traction is the friction limit on the slip annulus and the slip increment
-    there is 2 s_m(r; A/2) (memory rule 2).
+    there is 2 s_m(r; A/2) (memory rule 2); zero for A <= 2 for the cylinders.
 
     Raises
     ------
     ValueError
-        If A is not finite or outside [0, 8/3].
+        If A is not finite or outside [0, 2 x gross-slip torque].
     """
-    value = validation.real_number("torque_range", torque_range, 0.0, 2 * GROSS_SLIP_TORQUE)
-    return 4.0 * loading_work(value / 2.0, method=method, n_terms=n_terms)
+    return models.get(model).energy_per_cycle(torque_range, method=method, n_terms=n_terms)
 
 
-def dissipation_from_loop_area(torque_range) -> float:
-    """pi times the area of the loop of range A in the (omega, T*) plane (module docstring).
+def dissipation_from_loop_area(torque_range, *, method=None, n_terms=None, model=None) -> float:
+    """(pi n / 2) times the area of the loop of range A in the (omega, T*) plane (module docstring).
 
-    pi [2 A omega_m(A/2) - 8 int_1^(A/2) omega_m dt] from the Abel-Fredholm curves omega(b)
-    and T*(b) (``curves.MonotonicCurves.rotation_integral``); no slip profile is used.
+    (pi n / 2) [2 A omega_m(A/2) - 8 int_0^(A/2) omega_m dt], n the model's elastic bodies (2 for
+    the cylinders: pi [...]), from omega_m(tau) alone (``Monotonic.rotation_integral``: for the
+    cylinders' default method the Abel-Fredholm curves omega(b) and T*(b),
+    ``curves.MonotonicCurves.rotation_integral``; otherwise Gauss-Legendre panels of omega_m); no
+    slip profile is used, so this is an independent route to W(A) = 4 W_mono(A/2).
 
     Raises
     ------
     ValueError
-        If A is not finite or outside [0, 8/3].
+        If A is not finite or outside [0, 2 x gross-slip torque].
     """
-    value = validation.real_number("torque_range", torque_range, 0.0, 2 * GROSS_SLIP_TORQUE)
+    contact = models.get(model)
+    value = validation.real_number("torque_range", torque_range, 0.0, 2.0 * contact.gross_slip_torque)
     tau = value / 2.0
-    if tau <= 1.0:
-        return 0.0
-    curves = monotonic_curves()
-    return math.pi * (2.0 * value * curves.rotation(tau) - 8.0 * curves.rotation_integral(tau))
+    source = contact.monotonic(method, n_terms)
+    omega = source.point(tau)[1]
+    area = 2.0 * value * omega - 8.0 * source.rotation_integral(tau)
+    return 0.5 * math.pi * contact.elastic_bodies * area
 
 
 def threshold_asymptotics(eps):

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import validation
+from .. import models, validation
 from ..criteria import GROSS_SLIP_TORQUE
 from .samples import turning_point_indices, validated_signal
 
@@ -75,15 +75,18 @@ def _hysteresis_filter(torques: list[float], gate: float) -> list[int]:
     return kept
 
 
-def gated_signal(signal, gate, *, name: str = "signal", gate_name: str = "gate") -> np.ndarray:
+def gated_signal(signal, gate, *, name: str = "signal", gate_name: str = "gate", model=None) -> np.ndarray:
     """The signal with every reversal smaller than the torque range ``gate`` removed (module docstring).
 
     Parameters
     ----------
     signal : array_like
-        T* samples in [-4/3, 4/3], the history starting from the virgin interface (T* = 0).
+        T* samples within the gross-slip torque of ``model`` ([-4/3, 4/3] for the cylinders), the
+        history starting from the virgin interface (T* = 0).
     gate : float
-        Torque range in [0, 8/3]; 0 returns the (validated) signal unchanged.
+        Torque range in [0, twice the gross-slip torque]; 0 returns the (validated) signal unchanged.
+    model : str or ContactModel, optional
+        The contact model (``models``) whose gross-slip torque bounds the samples.
 
     Returns
     -------
@@ -95,10 +98,11 @@ def gated_signal(signal, gate, *, name: str = "signal", gate_name: str = "gate")
     Raises
     ------
     ValueError
-        For a bad sample (naming ``name[i]``) or a gate outside [0, 8/3] (naming ``gate_name``).
+        For a bad sample (naming ``name[i]``) or a gate outside [0, 2 x gross-slip torque] (naming ``gate_name``).
     """
-    gate = validation.real_number(gate_name, gate, 0.0, MAX_GATE)
-    values = validated_signal(name, signal)
+    contact = models.get(model)
+    gate = validation.real_number(gate_name, gate, 0.0, 2.0 * contact.gross_slip_torque)
+    values = validated_signal(name, signal, contact)
     if gate == 0.0:
         return values
     path = np.concatenate([[0.0], values])  # the history starts at the virgin torque

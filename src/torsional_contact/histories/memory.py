@@ -86,11 +86,14 @@ Independent check: ``verification.incremental`` solves the incremental mixed pro
 directly in the weak form; tests/test_history.py compares it with (M) and its
 nested versions.
 
-Models.  The rules use only the uncoupling (rule 1), a stick radius b(tau) that falls
-and a traction q_m(r; tau) that grows with tau: they hold as they stand for the half-space
-model (``half_space``: b < 1 for every tau > 0, so every reversal slips and nothing shakes
-down; the cylinders' range 2 is 0 there).  A state reaches the monotonic solutions only
-through the model's ``point`` / ``solution`` (``histories.monotonic.monotonic_model``: ``state.source``).
+Models.  The rules use only the uncoupling (rule 1: a pressure that never changes), a stick
+radius b(tau) that falls and a traction q_m(r; tau) that grows with tau, with the friction
+limit f p(r) of the model's pressure in place of f p0: they hold as they stand for every contact
+model of ``models`` (the half-space models slip at any torque, b < 1 for every tau > 0, so every
+reversal slips and nothing shakes down; the range 2 above is twice the model's slip onset,
+``ContactModel.reversal_slip_range``, and 4/3 its gross-slip torque).  A state reaches the
+monotonic solutions only through its model's ``monotonic`` (``state.source``: ``point`` /
+``solution``).
 
 Energies, loops and dissipation: ``energy`` and ``loops``.
 """
@@ -105,11 +108,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import validation
-from ..criteria import GROSS_SLIP_TORQUE
-from ..models import DEFAULT_MODEL
+from .. import models, validation
+from ..contact_models.base import ContactModel
+from ..contact_models.cylinder import DEFAULT_METHOD, monotonic_solution
 from ..solution import Solution
-from .monotonic import DEFAULT_METHOD, monotonic_model, monotonic_solution
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -123,8 +125,9 @@ __all__ = [
     "turning_points",
 ]
 
-#: Torque range above which a reversal slips again (twice the slip-onset torque).
-CYCLIC_SLIP_RANGE = 2.0
+#: Torque range above which a reversal of the cylinders slips again (twice the slip-onset torque; every model:
+#: ``ContactModel.reversal_slip_range``).
+CYCLIC_SLIP_RANGE = models.get().reversal_slip_range
 
 
 # --------------------------------------------------------------------------- states
@@ -157,7 +160,7 @@ class InterfaceState:
         curve, +-2 on branches).
     method, n_terms :
         The monotonic solutions' method (``fast``: n_terms None) and resolution (None, None
-        for the half-space model).
+        for a model without methods).
     front : float
         Slip front of the (Masing) branch the state lies on; remembered as the slip
         front of this state if the torque reverses here.  Equal to ``stick_radius``
@@ -169,8 +172,8 @@ class InterfaceState:
     dissipated_energy : float
         Work against friction since the virgin state, first loading included
         ((f p0)^2 a^3 / mu; rule 5 of the module docstring); +inf after spinning.
-    model : str
-        "cylinder" (default) or "half-space" (``models``): whose monotonic solutions.
+    contact : ContactModel
+        The contact model (``models``) whose monotonic solutions the state combines; ``model`` is its name.
     """
 
     torque: float
@@ -183,12 +186,17 @@ class InterfaceState:
     front: float = 1.0
     rigid_rotation: float = 0.0
     dissipated_energy: float = 0.0
-    model: str = DEFAULT_MODEL
+    contact: ContactModel = field(default_factory=models.get, repr=False)
+
+    @property
+    def model(self) -> str:
+        """The name of the state's contact model."""
+        return self.contact.name
 
     @property
     def source(self):
-        """The model's monotonic solution for this state's (model, method, n_terms) (``models``)."""
-        return monotonic_model(self.model, self.method, self.n_terms)
+        """The contact model's monotonic solution for this state's (method, n_terms)."""
+        return self.contact.monotonic(self.method, self.n_terms)
 
     @property
     def regime(self) -> str:
@@ -223,12 +231,12 @@ class InterfaceState:
     def residual_traction(self, r):
         """Traction (f p0) left when the torque is taken back to zero from this state.
 
-        Going to zero is a torque change of |T| <= 4/3 < 2, either a reversal or the
-        continuation of a branch whose total range stays below 2; in both cases no
-        point slips (memory rule 2) and the traction changes by -T r.
+        The traction of the state that the memory rules give at T* = 0 from here (``advance``):
+        for the cylinders a change of |T| <= 4/3 < 2 never slips (memory rule 2) and this is
+        traction - T r, but a half-space slips at any reversal, so the unloading is solved, not
+        assumed elastic.
         """
-        r = np.asarray(r, dtype=float)
-        return self.traction(r) - self.torque * r
+        return advance(self, 0.0).traction(r)
 
     def stress(self, r, z):
         """(sigma_zt, sigma_rt) / (f p0) at (r, z), z >= 0, by superposition (eqs. 2, 3, 23, 24)."""
@@ -265,8 +273,9 @@ def _finite_or_none(value: float):
 
 def initial_state(*, method=None, n_terms=None, model=None) -> InterfaceState:
     """The virgin interface: T* = 0, no slip, nothing remembered, no energy dissipated."""
-    source = monotonic_model(model, method, n_terms)
-    return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), source.method, source.n_terms, 1.0, 0.0, 0.0, source.model)
+    contact = models.get(model)
+    source = contact.monotonic(method, n_terms)
+    return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), source.method, source.n_terms, 1.0, 0.0, 0.0, contact)
 
 
 def _sign(x: float) -> int:
@@ -301,7 +310,7 @@ def _branch(stack) -> tuple[float, float]:
 def _compose(stack, direction, tau, torque, energy, source) -> InterfaceState:
     """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau.
 
-    ``source``: the model's monotonic solution (``histories.monotonic.monotonic_model``)."""
+    ``source``: the model's monotonic solution (``ContactModel.monotonic``)."""
     b, omega, _ = source.point(tau)
     if stack:
         origin = stack[-1].state
@@ -311,7 +320,7 @@ def _compose(stack, direction, tau, torque, energy, source) -> InterfaceState:
         terms = ((float(direction), tau),)
         omega = direction * omega
     return InterfaceState(torque, b, direction, tuple(stack), terms, source.method, source.n_terms, b, omega, energy,
-                          source.model)
+                          source.contact)
 
 
 def _closure(stack, direction, torque, energy, source) -> InterfaceState:
@@ -349,9 +358,10 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     Raises
     ------
     ValueError
-        If ``torque`` is not finite or |torque| > 4/3 (the cylinders spin).
+        If ``torque`` is not finite or |torque| is above the model's gross-slip torque (4/3 for the
+        cylinders: they spin).
     """
-    t = validation.torque("torque", torque)
+    t = state.contact.checked_torque("torque", torque)
     if t == state.torque:
         return state
     source = state.source
@@ -362,7 +372,7 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
         origin, g = _branch(stack)
         closes = bool(stack) and d * (t - _limit(stack)) >= 0
         end = _limit(stack) if closes else t
-        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, GROSS_SLIP_TORQUE)
+        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, source.contact.gross_slip_torque)
         energy += g * (source.point(tau_b)[2] - source.point(tau_a)[2])
         if not closes:
             return _compose(stack, d, tau_b, t, energy, source)
@@ -380,16 +390,17 @@ def history(torques, *, method=None, n_terms=None, model=None,
     ----------
     torques : sequence or array of float
         T* after each step (turning points, or any points: consecutive points in the
-        same direction are simply one branch sampled more finely).  Each in [-4/3, 4/3].
+        same direction are simply one branch sampled more finely).  Each within the model's
+        gross-slip torque ([-4/3, 4/3] for the cylinders).
         A long sampled signal is better served by ``histories.signal.analyse_signal``
         (arrays instead of objects, the same numbers).
     method : {"fast", "complete", "published"}, optional
         The monotonic solutions: ``fast`` (default, the Abel-Fredholm method through the
         interpolants of ``curves``) or a weak form at ``n_terms`` (default 145).
     n_terms : int, optional
-    model : {"cylinder", "half-space"}, optional
-        The contact model (``models``; default the cylinders).  The half-space has no
-        method: the rules are the same, with its closed-form monotonic solution.
+    model : str or ContactModel, optional
+        The contact model (a name of ``models.MODELS`` or a model object; default the cylinders).
+        The rules are the same for every model, with its monotonic solution.
     start : InterfaceState, optional
         Continue from this state instead of the virgin interface (its model and method are kept).
 
@@ -400,12 +411,12 @@ def history(torques, *, method=None, n_terms=None, model=None,
     Raises
     ------
     ValueError
-        Naming ``torques[i]`` for a non-finite entry or |T*| > 4/3; for an empty history;
-        for an unknown method or n_terms < 1; for an unknown model, or a method or n_terms
-        with model="half-space".
+        Naming ``torques[i]`` for a non-finite entry or |T*| above the model's gross-slip torque; for an
+        empty history; for an unknown method or n_terms < 1; for an unknown model, or a method or n_terms
+        with a model that has no methods.
     """
-    values = validation.torque_sequence("torques", torques)
     state = initial_state(method=method, n_terms=n_terms, model=model) if start is None else start
+    values = validation.torque_sequence("torques", torques, checked=state.contact.checked_torque)
     out = []
     for t in values:
         state = advance(state, t)

@@ -62,12 +62,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import validation
-from ..criteria import GROSS_SLIP_TORQUE
-from ..models import DEFAULT_MODEL
+from .. import models, validation
+from ..contact_models.base import ContactModel
 from . import stack_walk
 from .gate import MAX_GATE, gated_signal
-from .monotonic import monotonic_model
 from .samples import turning_point_indices, validated_signal
 
 __all__ = [
@@ -141,8 +139,8 @@ class SignalHistory:
         Turning points of the signal removed by the gate.
     method, n_terms :
         The monotonic solutions used.
-    model : str
-        The contact model (``models``).
+    contact : ContactModel
+        The contact model (``models``); ``model`` is its name.
     """
 
     samples: int
@@ -167,7 +165,12 @@ class SignalHistory:
     dropped_turning_points: int
     _pieces: dict = field(repr=False)
     _signal: np.ndarray = field(repr=False)
-    model: str = DEFAULT_MODEL
+    contact: ContactModel = field(default_factory=models.get, repr=False)
+
+    @property
+    def model(self) -> str:
+        """The name of the contact model."""
+        return self.contact.name
 
     @property
     def memory(self) -> RememberedPoints:
@@ -268,7 +271,7 @@ class SignalHistory:
         (the edges), ``count`` (full loops 1, halves 1/2) and ``dissipated_energy`` (the sum
         of the loops' own energies, not W at the centre); sorted by range, then mean.
         """
-        w = validation.real_number("bin_width", bin_width, MIN_BIN_WIDTH, MAX_GATE)
+        w = validation.real_number("bin_width", bin_width, MIN_BIN_WIDTH, 2.0 * self.contact.gross_slip_torque)
         if self.cycle_range.size == 0:
             return []
         i, j = _bin(self.cycle_range, w), _bin(self.cycle_mean, w)
@@ -289,8 +292,8 @@ class SignalHistory:
         which, state = stack_walk.piece_of_sample(self._signal, self.index, p)
         origin_omega = np.where(p["origin"] >= 0, self.rigid_rotation[np.maximum(p["origin"], 0)], 0.0)
         g, d = p["g"][which], p["d"][which]
-        tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, GROSS_SLIP_TORQUE)
-        _, omega_m, work = monotonic_model(self.model, self.method, self.n_terms).points(tau)
+        tau = np.minimum(np.abs(self._signal - p["origin_torque"][which]) / g, self.contact.gross_slip_torque)
+        _, omega_m, work = self.contact.monotonic(self.method, self.n_terms).points(tau)
         with np.errstate(invalid="ignore"):  # inf - inf after spinning (omega: replaced below; energy stays inf)
             omega = origin_omega[which] + d * g * omega_m
         # a sample at a turning point where a loop closed exactly is that earlier state (or the mirrored
@@ -323,7 +326,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str =
     Parameters
     ----------
     signal : array_like
-        T* samples in [-4/3, 4/3], the history starting from the virgin interface.
+        T* samples within the model's gross-slip torque ([-4/3, 4/3] for the cylinders), the history
+        starting from the virgin interface.
     method, n_terms, model :
         As for ``history`` (default: the cylinders, the Abel-Fredholm method through ``curves``).
     name : str
@@ -345,21 +349,22 @@ def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str =
     ValueError
         Naming ``name[i]`` for a bad sample; for an empty signal, a bad method or gate.
     """
-    curves = monotonic_model(model, method, n_terms)
+    contact = models.get(model)
+    curves = contact.monotonic(method, n_terms)
     method, n_terms, points = curves.method, curves.n_terms, curves.points
-    values = validated_signal(name, signal)
-    gate = validation.real_number(gate_name, gate, 0.0, MAX_GATE)
+    values = validated_signal(name, signal, contact)
+    gate = validation.real_number(gate_name, gate, 0.0, 2.0 * contact.gross_slip_torque)
     dropped = 0
     if gate > 0.0:
         before = turning_point_indices(values).size
-        values = gated_signal(values, gate)
+        values = gated_signal(values, gate, model=contact)
         dropped = before - turning_point_indices(values).size
     index = turning_point_indices(values)
     torque = values[index]
     n = index.size
     direction = np.sign(np.diff(torque, prepend=0.0)).astype(np.int64)
     walk = stack_walk.walk(torque, direction)
-    pieces = stack_walk.assemble_pieces(torque, direction, walk)
+    pieces = stack_walk.assemble_pieces(torque, direction, walk, contact.gross_slip_torque)
     last = pieces["last"]
 
     _, _, work_a = points(pieces["tau_a"])
@@ -427,5 +432,5 @@ def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str =
         dropped_turning_points=int(dropped),
         _pieces=sample_pieces,
         _signal=values,
-        model=curves.model,
+        contact=contact,
     )

@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..criteria import GROSS_SLIP_TORQUE
-
 __all__ = ["walk", "assemble_pieces", "accumulate", "cycles", "piece_of_sample"]
 
 
@@ -63,12 +61,13 @@ def walk(torque: np.ndarray, direction: np.ndarray) -> dict:
     }
 
 
-def assemble_pieces(torque: np.ndarray, direction: np.ndarray, walk: dict) -> dict:
+def assemble_pieces(torque: np.ndarray, direction: np.ndarray, walk: dict, gross_slip_torque: float) -> dict:
     """The stretches of branches crossed by every step, in order (``histories.signal``, step 3).
 
     A step k crosses one piece per loop it closes (origin T_k of the loop, ending at its
     limit) and, unless it ends exactly at a limit, a last piece from the newest remembered
-    point (or the virgin curve) to T_k.  ``limit`` is -2 for those last pieces.
+    point (or the virgin curve) to T_k.  ``limit`` is -2 for those last pieces.  The increments tau
+    are capped at the model's ``gross_slip_torque``.
     """
     n = torque.size
     c_state, c_origin, c_limit = walk["closed_state"], walk["closed_origin"], walk["closed_limit"]
@@ -100,7 +99,7 @@ def assemble_pieces(torque: np.ndarray, direction: np.ndarray, walk: dict) -> di
         "end": end,
         "g": g,
         "tau_a": np.abs(start - origin_torque) / g,
-        "tau_b": np.minimum(np.abs(end - origin_torque) / g, GROSS_SLIP_TORQUE),
+        "tau_b": np.minimum(np.abs(end - origin_torque) / g, gross_slip_torque),
         "first": first,
         "count": count,
         "last": first + count - 1,

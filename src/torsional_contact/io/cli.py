@@ -34,10 +34,9 @@ import warnings
 
 import numpy as np
 
-from .. import __version__, extras
+from .. import __version__, extras, models
 from ..backends import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS
 from ..dispatch import solve
-from ..models import DEFAULT_MODEL, MODELS
 from ..solvers.weak_form import WEAK_FORMS
 from . import cli_units
 
@@ -140,7 +139,8 @@ def _cmd_history(args):
                               ("--bin-width", args.bin_width), ("--column", args.column)):
             if value is not None:
                 raise UsageError(f"{option} needs --signal (it applies to a sampled signal)")
-        torques = validation.torque_sequence("--turning-points", args.turning_points)
+        torques = validation.torque_sequence("--turning-points", args.turning_points,
+                                             models.get(args.model).checked_torque)
         _radii(args.radii)
         states = history(torques, method=args.method, n_terms=args.n_terms, model=args.model)
         fields = ("traction", "slip", "residual_traction")
@@ -267,9 +267,10 @@ def _add_solver_options(p) -> None:
                    help=f"published and complete weak forms: number of eigenfunctions (default {DEFAULT_N_TERMS}); "
                    "not used by the default method (fast: the interface values need no truncation)")
     p.add_argument("--radii", type=real_argument, nargs="+", help="also report traction and slip at these r/a")
-    p.add_argument("--model", choices=MODELS, default=DEFAULT_MODEL,
-                   help="cylinder (default): the flat-ended cylinders; half-space: two half-spaces under the same "
-                   "uniform pressure (closed-form: no --method, no --n-terms)")
+    p.add_argument("--model", choices=models.names(), default=models.DEFAULT_MODEL,
+                   help="the contact model: " + "; ".join(f"{name}: {contact.description}" for name, contact in
+                                                          models.MODELS.items())
+                   + f" (default {models.DEFAULT_MODEL}; --method and --n-terms apply to models with methods only)")
 
 
 def build_parser() -> argparse.ArgumentParser:

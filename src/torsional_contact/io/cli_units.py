@@ -25,6 +25,8 @@ import math
 
 import numpy as np
 
+from .. import models
+
 __all__ = ["SPECIMEN_OPTIONS", "add_specimen_options", "add_fit_parser", "specimen_from", "number_or_quantity",
            "plain_number", "solve_si", "history_si", "fit_command"]
 
@@ -81,7 +83,7 @@ def specimen_from(args):
                          "--shear-modulus go together")
     values = {dest: getattr(args, dest) for dest, _ in SPECIMEN_OPTIONS}
     try:
-        return Specimen(**values, gauge_length=args.gauge_length)
+        return Specimen(**values, gauge_length=args.gauge_length, model=getattr(args, "model", None))
     except ValueError as exc:  # name the option, not the keyword
         text = str(exc)
         for dest, flag in (*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length")):
@@ -142,17 +144,18 @@ def history_si(args, specimen):
 
     label = f"--signal {args.signal}"
     columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label)
+    contact = specimen.contact if args.model is None else models.get(args.model)
+    gross = contact.gross_slip_torque
     torque_star = columns["torque"] / specimen.torque_scale
-    limit = 4.0 / 3.0 * (1 + 4 * np.finfo(float).eps)
-    bad = np.abs(torque_star) > limit
+    bad = np.abs(torque_star) > gross * (1 + 4 * np.finfo(float).eps)
     if bad.any():
         i = int(np.argmax(bad))
         raise ValueError(f"{label}: sample {i} (data row {i + 1}): torque {columns['torque'][i]:.6g} N m exceeds the "
-                         f"gross-slip torque 2 f F a / 3 = {specimen.gross_slip_torque:.6g} N m: the cylinders spin, "
-                         "there is no static solution")
+                         f"gross-slip torque {gross * specimen.torque_scale:.6g} N m (T* = {contact.gross_slip_text}): "
+                         f"{contact.bodies} spin, there is no static solution")
     gate = 0.0 if args.gate is None else _torque_text("--gate", args.gate) / specimen.torque_scale
     bin_width = None if args.bin_width is None else _torque_text("--bin-width", args.bin_width) / specimen.torque_scale
-    result = analyse_values(np.clip(torque_star, -4.0 / 3.0, 4.0 / 3.0), source=args.signal, method=args.method,
+    result = analyse_values(np.clip(torque_star, -gross, gross), source=args.signal, method=args.method,
                             n_terms=args.n_terms, model=args.model, gate=gate, bin_width=bin_width,
                             progress=not args.no_progress, full=args.json)
     record = physical_record(result, specimen)

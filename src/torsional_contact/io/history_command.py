@@ -26,8 +26,8 @@ import sys
 
 import numpy as np
 
-from .. import validation
-from ..histories.signal import MAX_GATE, MIN_BIN_WIDTH, analyse_signal
+from .. import models, validation
+from ..histories.signal import MIN_BIN_WIDTH, analyse_signal
 from .signal_files import read_signal, write_table
 
 __all__ = ["analyse_file", "analyse_values", "PROGRESS_SAMPLES", "STATES_IN_JSON", "DEFAULT_BIN_WIDTH", "UNITS"]
@@ -71,7 +71,7 @@ def analyse_file(path: str, *, method=None, n_terms=None, model=None, output=Non
     """Read the T* samples of ``path`` (``io.signal_files.read_signal``; ``column``: of a CSV with
     several columns) and analyse them with ``analyse_values`` (the other arguments are its own)."""
     label = f"--signal {path}"
-    values = read_signal(path, label=label, column=column)
+    values = read_signal(path, label=label, column=column, model=model)
     return analyse_values(values, source=path, method=method, n_terms=n_terms, model=model, output=output,
                           states=states, gate=gate, bin_width=bin_width, progress=progress, full=full, parents=parents)
 
@@ -95,7 +95,8 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, model=None
         states (``SignalHistory.state_columns``); format by extension, through the one
         writer (``io.output``: never over the input; ``parents``: create missing directories).
     gate : float
-        Hysteresis gate (torque range in [0, 8/3], ``histories.signal.gated_signal``).
+        Hysteresis gate (torque range in [0, twice the gross-slip torque: 8/3 for the cylinders],
+        ``histories.signal.gated_signal``).
     bin_width : float, optional
         Width of the rainflow bins (module docstring).
     full : bool
@@ -106,9 +107,10 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, model=None
     ValueError
         Naming the option (``--gate``, ``--bin-width``) or the file and line of a bad sample.
     """
-    gate = validation.real_number("--gate", gate, 0.0, MAX_GATE, " (a torque range; 0: no gate)")
+    widest = 2.0 * models.get(model).gross_slip_torque
+    gate = validation.real_number("--gate", gate, 0.0, widest, " (a torque range; 0: no gate)")
     if bin_width is not None:
-        bin_width = validation.real_number("--bin-width", bin_width, MIN_BIN_WIDTH, MAX_GATE, " (a torque range)")
+        bin_width = validation.real_number("--bin-width", bin_width, MIN_BIN_WIDTH, widest, " (a torque range)")
     label = f"--signal {source}"
     enabled = progress and values.size >= PROGRESS_SAMPLES
     with _progress(enabled, values.size * (1 + (output is not None))) as advance:

@@ -25,8 +25,7 @@ import os
 
 import numpy as np
 
-from .. import validation
-from ..criteria import GROSS_SLIP_TORQUE
+from .. import models, validation
 
 __all__ = ["read_signal", "format_columns", "write_sample_table", "table_format", "write_table", "read_table"]
 
@@ -35,19 +34,22 @@ _EXPECTED = ("expected one torque T* in [-4/3, 4/3] per line, or a CSV column ch
 _DELIMITERS = (b",", b";", b"\t")
 
 
-def _check_values(label: str, values: np.ndarray, where) -> np.ndarray:
-    """Finite torques within [-4/3, 4/3] (clipped by rounding), or ValueError naming ``where(i)``."""
+def _check_values(label: str, values: np.ndarray, where, model=None) -> np.ndarray:
+    """Finite torques within the model's gross-slip torque ([-4/3, 4/3] for the cylinders; clipped by
+    rounding), or ValueError naming ``where(i)``."""
     if values.size == 0:
         raise ValueError(f"{label}: no samples ({_EXPECTED})")
-    limit = GROSS_SLIP_TORQUE * (1.0 + validation.TORQUE_TOLERANCE)
+    contact = models.get(model)
+    gross, text = contact.gross_slip_torque, contact.gross_slip_text
+    limit = gross * (1.0 + validation.TORQUE_TOLERANCE)
     bad = ~(np.abs(values) <= limit)
     if bad.any():
         i = int(np.argmax(bad))
         v = float(values[i])
         problem = "is not finite" if not np.isfinite(v) else (
-            "lies outside [-4/3, 4/3] (beyond 4/3 the cylinders spin: no static solution)")
+            f"lies outside [-{text}, {text}] (beyond {text} {contact.bodies} spin: no static solution)")
         raise ValueError(f"{label} {where(i)}: {v!r} {problem}")
-    return np.clip(values, -GROSS_SLIP_TORQUE, GROSS_SLIP_TORQUE)
+    return np.clip(values, -gross, gross)
 
 
 def _column_number(label: str, column, count: int, names: list[str] | None) -> int:
@@ -74,7 +76,7 @@ def _column_number(label: str, column, count: int, names: list[str] | None) -> i
     return names.index(text)
 
 
-def _read_npy(label: str, path: str, column=None) -> np.ndarray:
+def _read_npy(label: str, path: str, column=None, model=None) -> np.ndarray:
     try:
         array = np.load(path, allow_pickle=False)
     except (OSError, ValueError, EOFError) as exc:
@@ -86,10 +88,10 @@ def _read_npy(label: str, path: str, column=None) -> np.ndarray:
         if array.shape[1] == 0:
             raise ValueError(f"{label}: no samples (shape {array.shape})")
         j = _column_number(label, column, array.shape[1], None)
-        return _check_values(label, array[:, j].astype(float), lambda i: f"element [{i}, {j}]")
+        return _check_values(label, array[:, j].astype(float), lambda i: f"element [{i}, {j}]", model)
     if column is not None:
         _column_number(label, column, 1, None)
-    return _check_values(label, array.astype(float), lambda i: f"element {i}")
+    return _check_values(label, array.astype(float), lambda i: f"element {i}", model)
 
 
 def _fields(line: bytes, delimiter: bytes | None) -> list[bytes]:
@@ -104,7 +106,7 @@ def _is_number(field: bytes) -> bool:
     return True
 
 
-def _read_text(label: str, path: str, column=None) -> np.ndarray:
+def _read_text(label: str, path: str, column=None, model=None) -> np.ndarray:
     try:
         with open(path, "rb") as handle:
             lines = handle.read().split(b"\n")
@@ -118,11 +120,11 @@ def _read_text(label: str, path: str, column=None) -> np.ndarray:
         except ValueError:  # comments, a header, several columns or a bad line: read as a table below
             values = None
         if values is not None:
-            return _check_values(label, values, lambda i: f"line {i + 1}")
-    return _read_table(label, lines, column)
+            return _check_values(label, values, lambda i: f"line {i + 1}", model)
+    return _read_table(label, lines, column, model)
 
 
-def _read_table(label: str, lines: list[bytes], column) -> np.ndarray:
+def _read_table(label: str, lines: list[bytes], column, model=None) -> np.ndarray:
     """A table with an optional header; ValueError naming the first line that does not hold a number."""
     content = [n for n, raw in enumerate(lines) if raw.strip() and not raw.lstrip().startswith(b"#")]
     if not content:
@@ -153,14 +155,15 @@ def _read_table(label: str, lines: list[bytes], column) -> np.ndarray:
             except ValueError:
                 shown = row[j].decode("utf-8", errors="replace")
                 raise ValueError(f"{where}: {shown[:40]!r} is not a number ({_EXPECTED})") from None
-    return _check_values(label, values, lambda i: f"line {content[i] + 1}")
+    return _check_values(label, values, lambda i: f"line {content[i] + 1}", model)
 
 
-def read_signal(path, label: str | None = None, column=None) -> np.ndarray:
+def read_signal(path, label: str | None = None, column=None, model=None) -> np.ndarray:
     """The T* samples of ``path``: a ``.npy`` array, or text with one number per line or a CSV column.
 
     ``column``: which column of a table (a number from 1, or a name of its header line);
-    needed only when the file has several columns.
+    needed only when the file has several columns.  ``model``: the contact model whose gross-slip
+    torque bounds the samples (default the cylinders: [-4/3, 4/3]).
 
     Raises
     ------
@@ -175,8 +178,8 @@ def read_signal(path, label: str | None = None, column=None) -> np.ndarray:
         shown = label.replace("\0", "\\0")
         raise ValueError(f"{shown}: cannot read (the path contains a NUL character)")
     if path.endswith(".npy"):
-        return _read_npy(label, path, column)
-    return _read_text(label, path, column)
+        return _read_npy(label, path, column, model)
+    return _read_text(label, path, column, model)
 
 
 # --------------------------------------------------------------------------- writing
