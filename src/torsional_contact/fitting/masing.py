@@ -16,7 +16,8 @@ gross-slip torque 2 f F a / 3 as the twist grows: a twist-controlled rig's gross
 is the far end of the same branches, with no special case (the spinning state erases the
 memory because its torque exceeds every remembered one; so does the long branch here).
 
-``walk`` does the bookkeeping on the turning-point twists; ``torque_along`` evaluates the
+``walk`` does the bookkeeping on the turning-point twists (the one Masing engine, ``histories.masing``);
+``torque_along`` evaluates the
 torque and its slope dT/dtheta at every sample (``pieces`` tabulates, once per walk, what it looks
 up for each sample: its piece's origin, factor and direction).  ``tests/test_fit.py`` checks both against the
 torque-driven ``histories.analyse_signal`` of the same history.
@@ -27,6 +28,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+from ..histories import masing
 
 __all__ = ["Walk", "walk", "Turning", "turning_torques", "Pieces", "pieces", "torque_along", "curvature_along",
            "jacobian_along"]
@@ -56,38 +59,18 @@ class Walk:
 def walk(targets) -> Walk:
     """The memory rules on the turning-point twists ``targets`` (from the virgin state u = 0).
 
-    ``targets[j]`` is where segment j ends: the turning points, then the last twist reached.
+    ``targets[j]`` is where segment j ends: the turning points, then the last twist reached.  The stack is
+    the one Masing engine's (``histories.masing.walk``); a segment of zero length reverses the previous one
+    (a turning twist that an optimiser has put on top of the previous one).
     """
     u = [float(v) for v in targets]
-    origin, g, direction, end, first, count = [], [], [], [], [], []
-    stack: list[int] = []
-    current, heading = 0.0, 0
-    for j, target in enumerate(u):
-        d = 1 if target > current else -1 if target < current else (-heading or 1)
-        if heading != 0 and d != heading:
-            stack.append(j - 1)  # turning point j - 1 lies at ``current``
-        first.append(len(origin))
-        while True:
-            if stack:
-                o, factor = stack[-1], 2.0
-                limit = u[stack[-2]] if len(stack) >= 2 else -u[stack[-1]]
-                closes = d * (target - limit) >= 0
-            else:
-                o, factor, closes, limit = -1, 1.0, False, target
-            origin.append(o)
-            g.append(factor)
-            direction.append(d)
-            end.append(limit if closes else target)
-            if not closes:
-                break
-            if len(stack) >= 2:  # the inner loop closes and is erased (rule 4)
-                del stack[-2:]
-            else:  # the branch from T_1 meets the mirrored virgin curve at -T_1
-                stack.pop()
-        count.append(len(origin) - first[-1])
-        current, heading = target, d
-    return Walk(np.array(u), np.array(origin, dtype=int), np.array(g), np.array(direction, dtype=float),
-                np.array(end), np.array(first, dtype=int), np.array(count, dtype=int))
+    directions, current, heading = [], 0.0, 0
+    for target in u:
+        heading = 1 if target > current else -1 if target < current else (-heading or 1)
+        directions.append(heading)
+        current = target
+    p = masing.walk(u, directions)
+    return Walk(np.array(u), p.origin, p.g, p.direction.take(p.step).astype(float), p.end, p.first, p.count)
 
 
 @dataclass(frozen=True)

@@ -14,18 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import models
-from .memory import (
-    InterfaceState,
-    _branch,
-    _closure,
-    _compose,
-    _limit,
-    _pop,
-    _sign,
-    _start,
-    advance,
-    history,
-)
+from .memory import InterfaceState, _closure, _compose, _origin_torque, _reversal, _stack, advance, history
 
 __all__ = ["sample_path", "Loop", "hysteresis_loop", "loop_work", "tangent_compliance", "relaxation_profiles"]
 
@@ -45,30 +34,27 @@ def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[Inte
         return ()
     source = state.source
     onset, gross = state.contact.slip_onset_torque, state.contact.gross_slip_torque
-    d = _sign(t - state.torque)
-    stack = _start(state, d)
-    current, energy = state.torque, state.dissipated_energy
+    d = 1 if t > state.torque else -1
+    stack = _stack(state)
+    position, energy = state.torque, state.dissipated_energy
     out: list[InterfaceState] = []
-    while True:
-        origin, g = _branch(stack)
-        closes = bool(stack) and d * (t - _limit(stack)) >= 0
-        end = _limit(stack) if closes else t
-        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, gross)
+    for origin, g, end, closure in stack.pieces(t, _reversal(state)):
+        memory = tuple(stack.labels)  # the stack the piece lies on
+        origin_torque = _origin_torque(origin)
+        tau_a, tau_b = abs(position - origin_torque) / g, min(abs(end - origin_torque) / g, gross)
         (b_a, _, work_a), (b_b, _, work_b) = source.point(tau_a), source.point(tau_b)
         taus = [onset] if tau_a < onset < tau_b else []  # a stick stretch ends at the slip onset
         taus += source.path_torques(b_a, b_b, n_points)
         for tau in taus:
             w = energy + g * (source.point(tau)[2] - work_a)
-            out.append(_compose(stack, d, tau, origin + d * g * tau, w, source))
+            out.append(_compose(memory, d, tau, origin_torque + d * g * tau, w, source))
         energy += g * (work_b - work_a)
-        if not closes:
-            out.append(_compose(stack, d, tau_b, t, energy, source))
-            return tuple(out)
-        out.append(_closure(stack, d, end, energy, source))
-        if end == t:
-            return tuple(out)
-        _pop(stack)
-        current = end
+        position = end
+        if closure is None:
+            out.append(_compose(memory, d, tau_b, t, energy, source))
+        else:
+            out.append(_closure(origin, closure, d, end, energy, source))
+    return tuple(out)
 
 
 # --------------------------------------------------------------------------- hysteresis

@@ -103,7 +103,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -112,6 +111,7 @@ from .. import models, validation
 from ..contact_models.base import ContactModel
 from ..contact_models.cylinder import DEFAULT_METHOD, monotonic_solution
 from ..solution import Solution
+from .masing import MasingStack
 
 __all__ = [
     "DEFAULT_METHOD",
@@ -278,64 +278,49 @@ def initial_state(*, method=None, n_terms=None, model=None) -> InterfaceState:
     return InterfaceState(0.0, 1.0, 0, (), ((1.0, 0.0),), source.method, source.n_terms, 1.0, 0.0, 0.0, contact)
 
 
-def _sign(x: float) -> int:
-    return 1 if x > 0 else -1
+def _stack(state: InterfaceState) -> MasingStack:
+    """The Masing engine's stack of ``state``: its remembered turning points (labels: the ``TurningPoint``s)."""
+    return MasingStack([tp.torque for tp in state.memory], state.memory, state.direction, state.torque)
 
 
-def _limit(stack: Sequence[TurningPoint]) -> float:
-    """Torque at which the current branch closes its loop (rule 4)."""
-    return stack[-2].torque if len(stack) >= 2 else -stack[-1].torque
+def _reversal(state: InterfaceState):
+    """The label remembered if the step from ``state`` reverses (made only then)."""
+    return lambda: TurningPoint(state.torque, state.front, state)
 
 
-def _pop(stack: list[TurningPoint]) -> None:
-    if len(stack) >= 2:
-        del stack[-2:]
-    else:
-        stack.pop()
+def _origin_torque(origin) -> float:
+    return origin.torque if isinstance(origin, TurningPoint) else 0.0
 
 
-def _start(state: InterfaceState, direction: int) -> list[TurningPoint]:
-    """The stack for a step in ``direction`` from ``state`` (pushes the state on a reversal)."""
-    stack = list(state.memory)
-    if state.direction != 0 and direction != state.direction:
-        stack.append(TurningPoint(state.torque, state.front, state))
-    return stack
-
-
-def _branch(stack) -> tuple[float, float]:
-    """(origin torque, factor g) of the current branch: the last turning point and 2, or the virgin curve."""
-    return (stack[-1].torque, 2.0) if stack else (0.0, 1.0)
-
-
-def _compose(stack, direction, tau, torque, energy, source) -> InterfaceState:
-    """State on the branch from the top of ``stack`` (or the virgin curve) at increment tau.
+def _compose(memory, direction, tau, torque, energy, source) -> InterfaceState:
+    """State on the branch from the newest point of ``memory`` (or the virgin curve) at increment tau.
 
     ``source``: the model's monotonic solution (``ContactModel.monotonic``)."""
     b, omega, _ = source.point(tau)
-    if stack:
-        origin = stack[-1].state
+    if memory:
+        origin = memory[-1].state
         terms = origin.terms + ((2.0 * direction, tau),)
         omega = origin.rigid_rotation + 2.0 * direction * omega
     else:
         terms = ((float(direction), tau),)
         omega = direction * omega
-    return InterfaceState(torque, b, direction, tuple(stack), terms, source.method, source.n_terms, b, omega, energy,
+    return InterfaceState(torque, b, direction, tuple(memory), terms, source.method, source.n_terms, b, omega, energy,
                           source.contact)
 
 
-def _closure(stack, direction, torque, energy, source) -> InterfaceState:
-    """State where the branch from the top of ``stack`` reaches its limit exactly (rule 4).
+def _closure(origin: TurningPoint, closure, direction, torque, energy, source) -> InterfaceState:
+    """State where the branch from ``origin`` reaches its limit exactly (rule 4), ``closure`` the engine's label.
 
     It is the earlier state at that torque (the inner loop cancels exactly: the same
-    monotonic solutions with opposite weights), or the mirrored virgin state for a
-    single remembered point; the stick radius is that of the closing branch; the
+    monotonic solutions with opposite weights), or the mirrored virgin state (``masing.MIRROR``)
+    for a single remembered point; the stick radius is that of the closing branch; the
     dissipated energy is the one accumulated on the way.
     """
-    closing, _, _ = source.point(abs(torque - stack[-1].torque) / 2.0)
-    if len(stack) >= 2:
-        earlier = stack[-2].state
+    closing, _, _ = source.point(abs(torque - origin.torque) / 2.0)
+    if isinstance(closure, TurningPoint):
+        earlier = closure.state
     else:
-        earlier = _compose([], direction, abs(torque), torque, energy, source)
+        earlier = _compose((), direction, abs(torque), torque, energy, source)
     return dataclasses.replace(earlier, torque=torque, stick_radius=closing, direction=direction,
                                dissipated_energy=energy)
 
@@ -347,13 +332,13 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     ----------
     state : InterfaceState
     torque : float
-        Target T* in [-4/3, 4/3].
+        Target T*, within the model's gross-slip torque ([-4/3, 4/3] for the cylinders).
 
     Returns
     -------
     InterfaceState
-        By the memory rules of the module docstring (loops closed on the way are erased;
-        the energy dissipated on the way is added, rule 5).
+        By the memory rules of the module docstring (the stack of ``histories.masing``: loops
+        closed on the way are erased; the energy dissipated on the way is added, rule 5).
 
     Raises
     ------
@@ -364,22 +349,20 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     t = state.contact.checked_torque("torque", torque)
     if t == state.torque:
         return state
-    source = state.source
-    d = _sign(t - state.torque)
-    stack = _start(state, d)
-    current, energy = state.torque, state.dissipated_energy
-    while True:
-        origin, g = _branch(stack)
-        closes = bool(stack) and d * (t - _limit(stack)) >= 0
-        end = _limit(stack) if closes else t
-        tau_a, tau_b = abs(current - origin) / g, min(abs(end - origin) / g, source.contact.gross_slip_torque)
+    source, gross = state.source, state.contact.gross_slip_torque
+    d = 1 if t > state.torque else -1
+    stack = _stack(state)
+    position, energy = state.torque, state.dissipated_energy
+    for piece in stack.pieces(t, _reversal(state)):
+        origin, g, end, closure = piece
+        memory = tuple(stack.labels)  # the stack the piece lies on
+        origin_torque = _origin_torque(origin)
+        tau_a, tau_b = abs(position - origin_torque) / g, min(abs(end - origin_torque) / g, gross)
         energy += g * (source.point(tau_b)[2] - source.point(tau_a)[2])
-        if not closes:
-            return _compose(stack, d, tau_b, t, energy, source)
-        if end == t:
-            return _closure(stack, d, t, energy, source)
-        _pop(stack)
-        current = end
+        position = end
+    if closure is None:  # the last piece: on a branch, or exactly at the point where its loop closed
+        return _compose(memory, d, tau_b, t, energy, source)
+    return _closure(origin, closure, d, t, energy, source)
 
 
 def history(torques, *, method=None, n_terms=None, model=None,

@@ -363,8 +363,7 @@ def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str =
     torque = values[index]
     n = index.size
     direction = np.sign(np.diff(torque, prepend=0.0)).astype(np.int64)
-    walk = stack_walk.walk(torque, direction)
-    pieces = stack_walk.assemble_pieces(torque, direction, walk, contact.gross_slip_torque)
+    walk = pieces = stack_walk.walk(torque, direction, contact.gross_slip_torque)
     last = pieces["last"]
 
     _, _, work_a = points(pieces["tau_a"])

@@ -1,108 +1,57 @@
 """The memory-rule stack walk of a long signal on arrays (``histories.signal``, steps 2 and 3 and the samples).
 
 Units: T* = 2T/(f F a).  Internal to ``analyse_signal``: the loops closed and the remembered
-points of every state (one plain-Python loop over the turning points), the stretches of
-branches ("pieces") they cross, assembled with numpy, and the piece of every sample.
+points of every state and the stretches of branches ("pieces") they cross, from the one Masing
+engine (``histories.masing``), and the piece of every sample.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["walk", "assemble_pieces", "accumulate", "cycles", "piece_of_sample"]
+from . import masing
+
+__all__ = ["walk", "accumulate", "cycles", "piece_of_sample"]
 
 
-def walk(torque: np.ndarray, direction: np.ndarray) -> dict:
-    """Rule 4 on the torques alone: the loops closed and the remembered points of every state.
+def walk(torque: np.ndarray, direction: np.ndarray, gross_slip_torque: float) -> dict:
+    """Rule 4 on the turning-point torques (``histories.masing.walk``, the one Masing engine), as the arrays of
+    ``histories.signal``.
 
-    Returns arrays: per loop closed, ``closed_state`` (the state whose step closed it),
-    ``closed_origin`` (the branch's origin T_k, a state number) and ``closed_limit``
-    (T_(k-1), or -1 for the mirrored virgin curve at -T_1); per state ``top``, ``depth``
-    and ``below`` (``SignalHistory.memory_top`` etc.).
+    Per piece (the stretches of branches crossed by every step, in order; a step k crosses one piece per
+    loop it closes, origin T_k of the loop, ending at its limit, and, unless it ends exactly at a limit, a
+    last piece from the newest remembered point or the virgin curve to T_k): ``state`` (k), ``origin`` (a
+    state number, -1: the virgin curve), ``origin_torque``, ``limit`` (-2 for those last pieces, -1 for the
+    mirrored virgin curve at -T_1, else the state reached), ``end``, ``g``, the increments ``tau_a``,
+    ``tau_b`` (capped at the model's ``gross_slip_torque``); per step ``first``, ``count``, ``last``; per
+    loop closed ``closed_state`` (the state whose step closed it), ``closed_origin`` and ``closed_limit``
+    (-1: the mirrored virgin curve); per state ``top``, ``depth`` and ``below`` (``SignalHistory.memory_top``
+    etc.).
     """
-    t = torque.tolist()
-    d = direction.tolist()
-    n = len(t)
-    push = [False] + ((direction[:-1] != 0) & (direction[1:] != direction[:-1])).tolist()
-    stack: list[int] = []  # state numbers of the remembered turning points
-    limits: list[float] = []  # the torque at which the branch from each of them closes
-    top, depth, below = [-1] * n, [0] * n, [-1] * n
-    closed_state, closed_origin, closed_limit = [], [], []
-    for k in range(n):
-        tk, dk = t[k], d[k]
-        if push[k]:  # a reversal at state k - 1: it is remembered
-            if stack:
-                below[k - 1] = stack[-1]
-                limits.append(t[stack[-1]])
-            else:
-                limits.append(-t[k - 1])
-            stack.append(k - 1)
-        while limits and dk * (tk - limits[-1]) >= 0:  # reaching the limit closes the loop (ties included)
-            limit = limits.pop()
-            closed_state.append(k)
-            closed_origin.append(stack.pop())
-            if stack:
-                closed_limit.append(stack.pop())
-                limits.pop()
-            else:
-                closed_limit.append(-1)
-            if limit == tk:  # exactly at the earlier state: the step ends there
-                break
-        if stack:
-            top[k] = stack[-1]
-            depth[k] = len(stack)
+    p = masing.walk(torque, direction)
+    limit = np.where(p.closure == masing.OPEN, -2, np.where(p.closure == masing.MIRROR, -1, p.closure))
+    closed = np.flatnonzero(limit != -2)
+    on_branch = p.origin >= 0
+    origin_torque = np.where(on_branch, torque[np.maximum(p.origin, 0)], 0.0)
+    start = np.concatenate([[0.0], p.end[:-1]])
     return {
-        "closed_state": np.array(closed_state, dtype=np.int64),
-        "closed_origin": np.array(closed_origin, dtype=np.int64),
-        "closed_limit": np.array(closed_limit, dtype=np.int64),
-        "top": np.array(top, dtype=np.int64),
-        "depth": np.array(depth, dtype=np.int64),
-        "below": np.array(below, dtype=np.int64),
-    }
-
-
-def assemble_pieces(torque: np.ndarray, direction: np.ndarray, walk: dict, gross_slip_torque: float) -> dict:
-    """The stretches of branches crossed by every step, in order (``histories.signal``, step 3).
-
-    A step k crosses one piece per loop it closes (origin T_k of the loop, ending at its
-    limit) and, unless it ends exactly at a limit, a last piece from the newest remembered
-    point (or the virgin curve) to T_k.  ``limit`` is -2 for those last pieces.  The increments tau
-    are capped at the model's ``gross_slip_torque``.
-    """
-    n = torque.size
-    c_state, c_origin, c_limit = walk["closed_state"], walk["closed_origin"], walk["closed_limit"]
-    c_end = np.where(c_limit >= 0, torque[np.maximum(c_limit, 0)], -torque[c_origin])
-    exact = np.zeros(n, dtype=bool)
-    exact[c_state[c_end == torque[c_state]]] = True
-    closures = np.bincount(c_state, minlength=n)
-    count = closures + ~exact
-    first = np.cumsum(count) - count
-    total = int(count.sum())
-    state = np.repeat(np.arange(n), count)
-    origin = np.empty(total, dtype=np.int64)
-    limit = np.empty(total, dtype=np.int64)
-    end = np.empty(total)
-    position = first[c_state] + (np.arange(c_state.size) - (np.cumsum(closures) - closures)[c_state])
-    origin[position], limit[position], end[position] = c_origin, c_limit, c_end
-    final = np.flatnonzero(~exact)
-    position = first[final] + closures[final]
-    origin[position], limit[position], end[position] = walk["top"][final], -2, torque[final]
-    start = np.concatenate([[0.0], end[:-1]])
-    on_branch = origin >= 0
-    origin_torque = np.where(on_branch, torque[np.maximum(origin, 0)], 0.0)
-    g = np.where(on_branch, 2.0, 1.0)
-    return {
-        "state": state,
-        "origin": origin,
+        "state": p.step,
+        "origin": p.origin,
         "origin_torque": origin_torque,
         "limit": limit,
-        "end": end,
-        "g": g,
-        "tau_a": np.abs(start - origin_torque) / g,
-        "tau_b": np.minimum(np.abs(end - origin_torque) / g, gross_slip_torque),
-        "first": first,
-        "count": count,
-        "last": first + count - 1,
+        "end": p.end,
+        "g": p.g,
+        "tau_a": np.abs(start - origin_torque) / p.g,
+        "tau_b": np.minimum(np.abs(p.end - origin_torque) / p.g, gross_slip_torque),
+        "first": p.first,
+        "count": p.count,
+        "last": p.first + p.count - 1,
+        "closed_state": p.step[closed],
+        "closed_origin": p.origin[closed],
+        "closed_limit": limit[closed],
+        "top": p.top,
+        "depth": p.depth,
+        "below": p.below,
     }
 
 
