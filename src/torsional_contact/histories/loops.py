@@ -14,7 +14,17 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import models
-from .memory import InterfaceState, _closure, _compose, _origin_torque, _reversal, _stack, advance, history
+from .memory import (
+    InterfaceState,
+    _closure,
+    _compose,
+    _memory,
+    _origin_torque,
+    _reversal,
+    _stack,
+    advance,
+    history,
+)
 
 __all__ = ["sample_path", "Loop", "hysteresis_loop", "loop_work", "tangent_compliance", "relaxation_profiles"]
 
@@ -38,8 +48,8 @@ def sample_path(state: InterfaceState, torque, n_points: int = 40) -> tuple[Inte
     stack = _stack(state)
     position, energy = state.torque, state.dissipated_energy
     out: list[InterfaceState] = []
-    for origin, g, end, closure in stack.pieces(t, _reversal(state)):
-        memory = tuple(stack.labels)  # the stack the piece lies on
+    for origin, g, end, closure in stack.step(t, _reversal(state)):
+        memory = _memory(origin)  # the stack the piece lies on
         origin_torque = _origin_torque(origin)
         tau_a, tau_b = abs(position - origin_torque) / g, min(abs(end - origin_torque) / g, gross)
         (b_a, _, work_a), (b_b, _, work_b) = source.point(tau_a), source.point(tau_b)

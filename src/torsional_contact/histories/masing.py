@@ -14,8 +14,8 @@ are the same:
 * a closed loop is erased (both points popped; from the first one, only it) and the step goes
   on along the branch that led to the limit; a step that ends exactly at a limit ends there.
 
-``MasingStack`` runs these rules one step at a time on labelled points (``step``: a state object for
-``histories.memory.advance``, a state or turning-point number for the array walks); ``walk`` runs
+``MasingStack`` runs these rules one step at a time on labelled points (``step``: a turning-point object
+for ``histories.memory.advance``, a state or turning-point number for the array walks); ``walk`` runs
 them over a whole sequence and returns the pieces as arrays (``Pieces``), with, per step, the
 newest remembered point after it and the chain of points below each remembered one (the stack of
 every state in O(1) each).  Nothing else in the package runs a Masing stack.
@@ -58,43 +58,47 @@ class MasingStack:
         return points[-2] if len(points) >= 2 else -points[-1]
 
     def step(self, target: float, label=None, direction: int = 0) -> list[tuple]:
-        """Go from ``current`` to ``target``: the pieces crossed, in order (``pieces``), the stack updated."""
-        return list(self.pieces(target, label, direction))
-
-    def pieces(self, target: float, label=None, direction: int = 0):
-        """Go from ``current`` to ``target``, yielding the pieces crossed, in order, as the stack is updated.
+        """Go from ``current`` to ``target``: the pieces crossed, in order, and the stack updated.
 
         ``label``: remembered with ``current`` if the step reverses (a callable is called for it then,
         and only then).  ``direction``: +1 or -1 when ``target`` equals ``current`` (otherwise ignored);
         with equal coordinates and no direction the step is one empty piece on the current branch and
         changes nothing.  Each piece is (origin label, g, end, closure): origin ``VIRGIN`` on the virgin
         curve; closure None when the piece ends at ``target`` without reaching a limit, else the label
-        of the earlier point reached (``MIRROR``: the mirror image of the first point).  While a piece is
-        being yielded the stack is the one it lies on (its origin on top); a closed loop is erased when
-        the next piece is asked for.
+        of the earlier point reached (``MIRROR``: the mirror image of the first point), whose loop is
+        erased with it.  (The stack a piece lies on is the one below its origin, plus the origin.)
         """
         current = self.current
         d = 1 if target > current else -1 if target < current else direction
         points, labels = self.points, self.labels
         if d == 0:
-            yield (labels[-1], 2.0, target, None) if points else (VIRGIN, 1.0, target, None)
-            return
-        if self.heading != 0 and d != self.heading:
+            return [(labels[-1], 2.0, target, None) if points else (VIRGIN, 1.0, target, None)]
+        if d != self.heading and self.heading:
             points.append(current)
             labels.append(label() if callable(label) else label)
-        self.heading, self.current = d, target
-        while points:
-            limit = points[-2] if len(points) >= 2 else -points[-1]
-            if d * (target - limit) < 0:
-                break
-            yield labels[-1], 2.0, limit, labels[-2] if len(points) >= 2 else MIRROR
-            if len(points) >= 2:
+        self.heading = d
+        self.current = target
+        pieces = []
+        depth = len(points)
+        while depth:
+            if depth >= 2:
+                limit = points[-2]
+                if d * (target - limit) < 0:
+                    break
+                pieces.append((labels[-1], 2.0, limit, labels[-2]))
                 del points[-2:], labels[-2:]
+                depth -= 2
             else:
+                limit = -points[-1]
+                if d * (target - limit) < 0:
+                    break
+                pieces.append((labels[-1], 2.0, limit, MIRROR))
                 points.pop(), labels.pop()
+                depth = 0
             if limit == target:  # exactly at the earlier point: the step ends there
-                return
-        yield (labels[-1], 2.0, target, None) if points else (VIRGIN, 1.0, target, None)
+                return pieces
+        pieces.append((labels[-1], 2.0, target, None) if depth else (VIRGIN, 1.0, target, None))
+        return pieces
 
 
 @dataclass(frozen=True)
@@ -134,28 +138,34 @@ def walk(targets, directions=None) -> Pieces:
     n = len(values)
     stack = MasingStack()
     labels = stack.labels
-    step_of, origin, g, end, closure = [], [], [], [], []
+    origin, g, end, closure = [], [], [], []  # columns, not tuples: a long list of tuples keeps the collector busy
     first, count, heading = [0] * n, [0] * n, [0] * n
     top, depth, below = [VIRGIN] * n, [0] * n, [VIRGIN] * n
-    for k, target in enumerate(values):
-        current = stack.current
+    step = stack.step
+    current, last = 0.0, 0  # the point reached and the direction of the last step that had one
+    for k in range(n):
+        target = values[k]
         d = 1 if target > current else -1 if target < current else given[k]
-        if d != 0 and stack.heading != 0 and d != stack.heading:  # point k - 1 will be remembered above the top
+        if d != last and last and d:  # point k - 1 will be remembered above the newest one
             below[k - 1] = labels[-1] if labels else VIRGIN
-        first[k] = len(origin)
-        for o, factor, e, c in stack.step(target, k - 1, d):
-            step_of.append(k)
+        start = len(origin)
+        first[k] = start
+        for o, factor, e, c in step(target, k - 1, d):
             origin.append(o)
             g.append(factor)
             end.append(e)
             closure.append(OPEN if c is None else c)
-        count[k] = len(origin) - first[k]
+        count[k] = len(origin) - start
         heading[k] = d
         if labels:
             top[k] = labels[-1]
             depth[k] = len(labels)
+        current = target
+        if d:
+            last = d
+    step_of = np.repeat(np.arange(n, dtype=np.int64), count)
     as_int = np.int64
-    return Pieces(np.array(step_of, dtype=as_int), np.array(origin, dtype=as_int), np.array(g, dtype=float),
+    return Pieces(step_of, np.array(origin, dtype=as_int), np.array(g, dtype=float),
                   np.array(end, dtype=float), np.array(closure, dtype=as_int), np.array(first, dtype=as_int),
                   np.array(count, dtype=as_int), np.array(heading, dtype=as_int), np.array(top, dtype=as_int),
                   np.array(depth, dtype=as_int), np.array(below, dtype=as_int))

@@ -292,6 +292,12 @@ def _origin_torque(origin) -> float:
     return origin.torque if isinstance(origin, TurningPoint) else 0.0
 
 
+def _memory(origin) -> tuple:
+    """The stack a branch from ``origin`` lies on: the one of its state when it was reached, and itself (or none:
+    the virgin curve)."""
+    return (*origin.state.memory, origin) if isinstance(origin, TurningPoint) else ()
+
+
 def _compose(memory, direction, tau, torque, energy, source) -> InterfaceState:
     """State on the branch from the newest point of ``memory`` (or the virgin curve) at increment tau.
 
@@ -353,15 +359,15 @@ def advance(state: InterfaceState, torque) -> InterfaceState:
     d = 1 if t > state.torque else -1
     stack = _stack(state)
     position, energy = state.torque, state.dissipated_energy
-    for piece in stack.pieces(t, _reversal(state)):
-        origin, g, end, closure = piece
-        memory = tuple(stack.labels)  # the stack the piece lies on
+    pieces = stack.step(t, _reversal(state))
+    for origin, g, end, _ in pieces:
         origin_torque = _origin_torque(origin)
         tau_a, tau_b = abs(position - origin_torque) / g, min(abs(end - origin_torque) / g, gross)
         energy += g * (source.point(tau_b)[2] - source.point(tau_a)[2])
         position = end
+    origin, closure = pieces[-1][0], pieces[-1][3]
     if closure is None:  # the last piece: on a branch, or exactly at the point where its loop closed
-        return _compose(memory, d, tau_b, t, energy, source)
+        return _compose(_memory(origin), d, tau_b, t, energy, source)
     return _closure(origin, closure, d, t, energy, source)
 
 
