@@ -51,6 +51,7 @@ from . import fields, validation
 from .backends import DEFAULT_METHOD, DEFAULT_N_TERMS, METHODS, Bilateral, Series
 from .criteria import GROSS_SLIP_TORQUE
 from .diagnostics import TruncationWarning, UnphysicalResultWarning
+from .records import SolutionRecord
 from .solvers.weak_form import MAX_SERIES_TERMS
 
 __all__ = [
@@ -207,18 +208,14 @@ class Solution:
             out[face] = backend.displacement(r[face])
         return self.sign * out.reshape(shape)
 
+    def record(self) -> SolutionRecord:
+        """The solution's result record (``records``: keys and their quantities)."""
+        return SolutionRecord(self.stick_radius, self.torque, self.rigid_rotation, self.regime, self.method,
+                              self.n_terms, self.model, self.backend.metadata())
+
     def as_dict(self) -> dict:
         """JSON-ready summary (a non-finite rigid rotation becomes None)."""
-        omega = self.rigid_rotation
-        return {
-            "stick_radius": self.stick_radius,
-            "torque": self.torque,
-            "rigid_rotation": omega if math.isfinite(omega) else None,
-            "regime": self.regime,
-            "method": self.method,
-            "n_terms": self.n_terms,
-            **self.backend.metadata(),
-        }
+        return self.record().as_dict()
 
 
 def _flat_points(r, z):

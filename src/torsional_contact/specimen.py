@@ -44,31 +44,7 @@ import numpy as np
 from . import models, units
 from .validation import TORQUE_TOLERANCE
 
-__all__ = ["Specimen", "PhysicalState", "PhysicalSignal", "SI_UNITS"]
-
-#: Unit of every physical key of a state or a history record.
-SI_UNITS = {
-    "torque": "N m",
-    "stick_radius": "m",
-    "slip_fronts": "m",
-    "turning_points": "N m",
-    "rigid_rotation": "rad",
-    "twist": "rad",
-    "dissipated_energy": "J",
-    "energy": "J",
-    "range": "N m",
-    "mean": "N m",
-    "range_bin": "N m",
-    "mean_bin": "N m",
-    "bin_width": "N m",
-    "gate": "N m",
-    "loop_energy": "J",
-    "radii": "m",
-    "traction": "Pa",
-    "slip": "m",
-    "residual_traction": "Pa",
-}
-
+__all__ = ["Specimen", "PhysicalState", "PhysicalSignal", "physical_record"]
 
 @dataclass(frozen=True)
 class Specimen:
@@ -175,7 +151,7 @@ class Specimen:
         return self.stress_scale**2 * self.radius**3 / self.shear_modulus
 
     def scales(self) -> dict:
-        """The factors from normalised to SI units, by quantity (JSON-ready)."""
+        """The factors from normalised to SI units, by quantity (``records.QUANTITIES``; JSON-ready)."""
         return {"torque": self.torque_scale, "length": self.radius, "stress": self.stress_scale,
                 "displacement": self.displacement_scale, "rotation": self.rotation_scale,
                 "energy": self.energy_scale, "pressure": self.pressure}
@@ -308,14 +284,6 @@ class Specimen:
         return float(contact.energy_per_cycle(2.0 * abs(t), method=method, n_terms=n_terms)) * self.energy_scale
 
 
-def _scaled(value, factor):
-    if value is None:
-        return None
-    if isinstance(value, (list, tuple)):
-        return [_scaled(v, factor) for v in value]
-    return float(value) * factor
-
-
 @dataclass(frozen=True)
 class PhysicalState:
     """One interface state in SI units; ``normalized`` is the state of the solvers (``Solution`` or
@@ -397,67 +365,36 @@ class PhysicalState:
         return u * self.specimen.displacement_scale
 
     def as_dict(self) -> dict:
-        """SI values (keys of ``SI_UNITS``), ``units``, and the normalised state under ``normalized``."""
-        return physical_record(self.normalized.as_dict(), self.specimen, self.contact)
+        """SI values (as the state's record declares them: ``records``), ``units``, and the normalised state under
+        ``normalized``."""
+        return physical_record(self.normalized.record(), self.specimen, self.contact)
 
 
-def physical_record(record: dict, specimen: Specimen, contact=None) -> dict:
-    """A normalised JSON record (``as_dict`` of a state, a history summary) in SI units.
+def physical_record(record, specimen: Specimen, contact=None) -> dict:
+    """A result record (``records.Record``, or a list of them merged at one level) in SI units.
 
-    Keys of ``SI_UNITS`` found at any depth are converted; a state with ``torque`` and
-    ``rigid_rotation`` gains ``twist`` when the specimen has a gauge length; a record with
-    ``dissipated_energy`` inside a list of cycles gains ``energy``.  The result has a
-    ``units`` object for the keys it converted and the input under ``normalized``.
+    Every field converts as its record declares it (``records``: no key is converted by its name);
+    a record with a torque and a rigid rotation gains the ``twist`` a rig measures (cylinders: when
+    the specimen has a gauge length; half-space models: always, the relative rotation of remote
+    points); a cycle gains its ``energy``.  The result has a ``units`` object for the keys it
+    converted and the normalised record under ``normalized``.
     """
-    converted, seen = _convert(record, specimen, set(), contact=specimen.contact if contact is None else contact)
-    out = {**converted, "units": {k: SI_UNITS[k] for k in SI_UNITS if k in seen}}
-    out["normalized"] = record
+    contact = specimen.contact if contact is None else contact
+    parts = [r for r in (record if isinstance(record, (list, tuple)) else [record]) if r is not None]
+    twist = None
+    if specimen.gauge_length is not None or not contact.shaft:
+        def twist(torque, rotation):
+            return float(specimen.twist(torque, rotation, contact))
+    scales = specimen.scales()
+    units: dict = {}
+    out: dict = {}
+    normalized: dict = {}
+    for part in parts:
+        out.update(part.si_dict(scales, units, twist))
+        normalized.update(part.as_dict())
+    out["units"] = units
+    out["normalized"] = normalized
     return out
-
-
-def _factor(key: str, specimen: Specimen) -> float:
-    torque, energy = specimen.torque_scale, specimen.energy_scale
-    return {"torque": torque, "turning_points": torque, "range": torque, "mean": torque, "range_bin": torque,
-            "mean_bin": torque, "bin_width": torque, "gate": torque, "loop_energy": energy,
-            "stick_radius": specimen.radius, "slip_fronts": specimen.radius, "radii": specimen.radius,
-            "rigid_rotation": specimen.rotation_scale, "dissipated_energy": energy, "energy": energy,
-            "traction": specimen.stress_scale, "residual_traction": specimen.stress_scale,
-            "slip": specimen.displacement_scale}[key]
-
-
-def _convert(value, specimen: Specimen, seen: set, in_cycles: bool = False, contact=None):
-    if isinstance(value, list):
-        items = [_convert(v, specimen, seen, in_cycles, contact)[0] for v in value]
-        return items, seen
-    if not isinstance(value, dict):
-        return value, seen
-    out = {}
-    for key, item in value.items():
-        counts = key in ("turning_points", "slip_fronts") and not isinstance(item, list)  # a summary's count
-        if key in SI_UNITS and not counts and (item is None or isinstance(item, (int, float, list))) \
-                and not isinstance(item, bool):
-            try:
-                out[key] = _scaled(item, _factor(key, specimen))
-                seen.add(key)
-            except (TypeError, ValueError):
-                out[key] = item
-        elif key == "regime" or not isinstance(item, (dict, list)):
-            out[key] = item
-        else:
-            out[key] = _convert(item, specimen, seen, in_cycles or key == "cycles", contact)[0]
-    if in_cycles and "dissipated_energy" in out and "energy" not in out:
-        out["energy"] = out["dissipated_energy"]
-        seen.add("energy")
-    has_twist = specimen.gauge_length is not None or not contact.shaft
-    if has_twist and "torque" in value and "rigid_rotation" in value and "twist" not in out:
-        torque, omega = value["torque"], value["rigid_rotation"]
-        if isinstance(torque, (int, float)) and isinstance(omega, (int, float)) and not isinstance(torque, bool):
-            out["twist"] = float(specimen.twist(torque, omega, contact))
-            seen.add("twist")
-        elif isinstance(torque, (int, float)) and omega is None:  # spinning: unbounded
-            out["twist"] = None
-            seen.add("twist")
-    return out, seen
 
 
 @dataclass(frozen=True)

@@ -61,7 +61,7 @@ class HalfSpaceState:
         return None  # no Dini series: the fields come from ``half_space.fields``
 
     def metadata(self) -> dict:
-        return {"model": MODEL}
+        return {}
 
 
 @dataclass(frozen=True)
@@ -101,11 +101,6 @@ class HalfSpaceSolution(Solution):
         if face.any():
             out[face] = self.backend.displacement(r[face])
         return self.sign * out.reshape(shape)
-
-    def as_dict(self) -> dict:
-        record = super().as_dict()
-        record["model"] = MODEL
-        return record
 
 
 def _solution(b: float, torque: float, sign: float, regime: str, tolerance: float) -> HalfSpaceSolution:

@@ -102,7 +102,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -110,6 +109,7 @@ import numpy as np
 from .. import models, validation
 from ..contact_models.base import ContactModel
 from ..contact_models.cylinder import DEFAULT_METHOD, monotonic_solution
+from ..records import StateRecord
 from ..solution import Solution
 from .masing import MasingStack
 
@@ -250,25 +250,15 @@ class InterfaceState:
         """u_theta(r, z) of the upper cylinder (f p0 a / mu), eqs. (4), (22), by superposition."""
         return sum(w * s.displacement(r, z) for w, s in self.components)
 
+    def record(self) -> StateRecord:
+        """The state's result record (``records``: keys and their quantities)."""
+        return StateRecord(self.torque, self.stick_radius, list(self.slip_fronts), list(self.turning_torques),
+                           self.rigid_rotation, self.regime, self.dissipated_energy, self.direction, self.method,
+                           self.n_terms, self.model)
+
     def as_dict(self) -> dict:
         """JSON-ready summary (non-finite numbers -> None)."""
-        return {
-            "torque": self.torque,
-            "stick_radius": self.stick_radius,
-            "slip_fronts": list(self.slip_fronts),
-            "turning_points": list(self.turning_torques),
-            "rigid_rotation": _finite_or_none(self.rigid_rotation),
-            "regime": self.regime,
-            "dissipated_energy": _finite_or_none(self.dissipated_energy),
-            "direction": self.direction,
-            "method": self.method,
-            "n_terms": self.n_terms,
-            "model": self.model,
-        }
-
-
-def _finite_or_none(value: float):
-    return value if math.isfinite(value) else None
+        return self.record().as_dict()
 
 
 def initial_state(*, method=None, n_terms=None, model=None) -> InterfaceState:

@@ -64,6 +64,7 @@ import numpy as np
 
 from .. import models, validation
 from ..contact_models.base import ContactModel
+from ..records import BinRecord, CycleRecord, SignalStateRecord
 from . import stack_walk
 from .gate import MAX_GATE, gated_signal
 from .samples import turning_point_indices, validated_signal
@@ -210,25 +211,23 @@ class SignalHistory:
         """Slip fronts (< 1) remembered at state k, oldest first."""
         return [float(self.front[j]) for j in self.memory[k] if self.front[j] < 1.0]
 
-    def states(self) -> list[dict]:
-        """One JSON-ready record per state (non-finite numbers -> None); for short signals."""
+    def state_records(self) -> list[SignalStateRecord]:
+        """One result record per state (``records``); for short signals."""
         regime = self.regime
         memory = self.memory
         out = []
         for k in range(self.index.size):
             remembered = memory[k]
-            out.append({
-                "index": int(self.index[k]),
-                "torque": float(self.torque[k]),
-                "stick_radius": float(self.stick_radius[k]),
-                "slip_fronts": [float(self.front[j]) for j in remembered if self.front[j] < 1.0],
-                "turning_points": [float(self.torque[j]) for j in remembered],
-                "rigid_rotation": _finite(self.rigid_rotation[k]),
-                "regime": regime[k],
-                "dissipated_energy": _finite(self.dissipated_energy[k]),
-                "direction": int(self.direction[k]),
-            })
+            out.append(SignalStateRecord(
+                int(self.index[k]), float(self.torque[k]), float(self.stick_radius[k]),
+                [float(self.front[j]) for j in remembered if self.front[j] < 1.0],
+                [float(self.torque[j]) for j in remembered], float(self.rigid_rotation[k]), regime[k],
+                float(self.dissipated_energy[k]), int(self.direction[k])))
         return out
+
+    def states(self) -> list[dict]:
+        """One JSON-ready record per state (non-finite numbers -> None); for short signals."""
+        return [r.as_dict() for r in self.state_records()]
 
     def state_columns(self) -> dict[str, np.ndarray]:
         """The states as named columns (one row per turning point) for a table file.
@@ -252,16 +251,19 @@ class SignalHistory:
             "memory_below": self.memory_below,
         }
 
-    def cycles(self) -> list[dict]:
-        """Loops grouped by exact (range, mean): ``range``, ``mean``, ``count`` (halves 1/2), ``dissipated_energy``."""
+    def cycle_records(self) -> list[CycleRecord]:
+        """Loops grouped by exact (range, mean) (``records.CycleRecord``)."""
         groups: dict[tuple[float, float], list] = {}
         for a, m, c, w in zip(self.cycle_range.tolist(), self.cycle_mean.tolist(), self.cycle_count.tolist(),
                               self.cycle_energy.tolist(), strict=True):
             entry = groups.setdefault((a, m), [0.0, 0.0])
             entry[0] += c
             entry[1] += w
-        return [{"range": a, "mean": m, "count": n, "dissipated_energy": _finite(w)}
-                for (a, m), (n, w) in groups.items()]
+        return [CycleRecord(a, m, n, w) for (a, m), (n, w) in groups.items()]
+
+    def cycles(self) -> list[dict]:
+        """Loops grouped by exact (range, mean): ``range``, ``mean``, ``count`` (halves 1/2), ``dissipated_energy``."""
+        return [r.as_dict() for r in self.cycle_records()]
 
     def rainflow_bins(self, bin_width: float) -> list[dict]:
         """The loops as a rainflow matrix: bins of range and mean torque, the non-empty ones.
@@ -271,6 +273,10 @@ class SignalHistory:
         (the edges), ``count`` (full loops 1, halves 1/2) and ``dissipated_energy`` (the sum
         of the loops' own energies, not W at the centre); sorted by range, then mean.
         """
+        return [r.as_dict() for r in self.bin_records(bin_width)]
+
+    def bin_records(self, bin_width: float) -> list[BinRecord]:
+        """``rainflow_bins`` as result records (``records.BinRecord``)."""
         w = validation.real_number("bin_width", bin_width, MIN_BIN_WIDTH, 2.0 * self.contact.gross_slip_torque)
         if self.cycle_range.size == 0:
             return []
@@ -279,12 +285,9 @@ class SignalHistory:
         keys, which = np.unique(i * span + (j - low), return_inverse=True)
         counts = np.bincount(which, weights=self.cycle_count, minlength=keys.size)
         energy = np.bincount(which, weights=self.cycle_energy, minlength=keys.size)
-        return [
-            {"range": (a + 0.5) * w, "mean": (m + 0.5) * w, "range_bin": [a * w, (a + 1) * w],
-             "mean_bin": [m * w, (m + 1) * w], "count": c, "dissipated_energy": _finite(e)}
-            for a, m, c, e in zip((keys // span).tolist(), (keys % span + low).tolist(), counts.tolist(),
-                                  energy.tolist(), strict=True)
-        ]
+        return [BinRecord((a + 0.5) * w, (m + 0.5) * w, [a * w, (a + 1) * w], [m * w, (m + 1) * w], c, e)
+                for a, m, c, e in zip((keys // span).tolist(), (keys % span + low).tolist(), counts.tolist(),
+                                      energy.tolist(), strict=True)]
 
     def sample_values(self) -> tuple[np.ndarray, np.ndarray]:
         """(omega, cumulative dissipated energy) at every sample of ``signal``."""

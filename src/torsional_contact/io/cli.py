@@ -102,14 +102,22 @@ def _radii(values):
     return None if values is None else validation.coordinates(np.asarray(values, dtype=float), names=("--radii",))
 
 
-def _profiles(record: dict, state, radii, fields=("traction", "slip")) -> dict:
-    """Add the interface profiles ``fields`` of ``state`` at ``radii`` (JSON: non-finite -> null)."""
-    if radii is not None:
-        radii = np.asarray(radii, dtype=float)
-        record["radii"] = radii.tolist()
-        for name in fields:
-            record[name] = [_json_number(float(v)) for v in getattr(state, name)(radii)]
-    return record
+def profiles(state, radii, residual: bool = False):
+    """The interface profiles of ``state`` at ``radii`` (``records.ProfileRecord``; the residual traction with
+    ``residual``), or None without radii."""
+    from ..records import ABSENT, ProfileRecord
+
+    if radii is None:
+        return None
+    radii = np.asarray(radii, dtype=float)
+    values = {name: [float(v) for v in getattr(state, name)(radii)] for name in ("traction", "slip")}
+    residual_traction = [float(v) for v in state.residual_traction(radii)] if residual else ABSENT
+    return ProfileRecord(radii.tolist(), values["traction"], values["slip"], residual_traction)
+
+
+def _with_profiles(record, profile) -> dict:
+    """The JSON of a result record with its profiles (if any) at the same level."""
+    return {**record.as_dict(), **(profile.as_dict() if profile is not None else {})}
 
 
 def _cmd_solve(args) -> dict:
@@ -121,7 +129,7 @@ def _cmd_solve(args) -> dict:
     _radii(args.radii)
     solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms,
                      model=args.model)
-    return _profiles({**solution.as_dict(), "model": args.model}, solution, args.radii)
+    return _with_profiles(solution.record(), profiles(solution, args.radii))
 
 
 def _cmd_history(args):
@@ -143,8 +151,7 @@ def _cmd_history(args):
                                              models.get(args.model).checked_torque)
         _radii(args.radii)
         states = history(torques, method=args.method, n_terms=args.n_terms, model=args.model)
-        fields = ("traction", "slip", "residual_traction")
-        return [_profiles(state.as_dict(), state, args.radii, fields) for state in states]
+        return [_with_profiles(state.record(), profiles(state, args.radii, residual=True)) for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
     from .output import resolve_output
@@ -159,7 +166,8 @@ def _cmd_history(args):
         resolve_output(path, label=option, inputs=(("--signal", args.signal),), parents=args.parents)
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, model=args.model, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
-                        progress=not args.no_progress, full=args.json, column=args.column, parents=args.parents)
+                        progress=not args.no_progress, full=args.json, column=args.column,
+                        parents=args.parents).as_dict()
 
 
 #: Largest --digits of ``reference`` (working precision digits + 20; every digit printed is kept).

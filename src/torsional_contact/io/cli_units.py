@@ -100,17 +100,15 @@ def solve_si(args, specimen) -> dict:
     else:
         state = specimen.solve(torque=_torque_text("--torque", args.torque), method=args.method, n_terms=args.n_terms,
                                model=args.model)
-    record = {**state.normalized.as_dict(), "model": args.model}
+    from ..specimen import physical_record
+    from .cli import profiles
+
+    radii = None
     if args.radii is not None:
         radii = np.array([_length("--radii", r) for r in args.radii]) / specimen.radius
         if np.any(radii < 0) or np.any(radii > 1):
             raise ValueError(f"--radii must lie in [0, {specimen.radius:g}] m (0 to the radius)")
-        record["radii"] = radii.tolist()
-        for name in ("traction", "slip"):
-            record[name] = [float(v) if math.isfinite(v) else None for v in getattr(state.normalized, name)(radii)]
-    from ..specimen import physical_record
-
-    return physical_record(record, specimen)
+    return physical_record([state.normalized.record(), profiles(state.normalized, radii)], specimen, state.contact)
 
 
 def _torque_text(option: str, value):
@@ -133,7 +131,7 @@ def history_si(args, specimen):
         if args.radii is not None:
             raise ValueError("--radii is not available with the specimen options for history (use solve)")
         torques = [_torque_text(f"--turning-points[{i}]", v) for i, v in enumerate(args.turning_points)]
-        return [physical_record({**state.normalized.as_dict(), "model": args.model}, specimen) for state in
+        return [physical_record(state.normalized.record(), specimen, state.contact) for state in
                 specimen.history(torques, method=args.method, n_terms=args.n_terms, model=args.model)]
     for option, value in (("--output", args.output), ("--states", args.states), ("--column", args.column)):
         if value is not None:
@@ -158,7 +156,7 @@ def history_si(args, specimen):
     result = analyse_values(np.clip(torque_star, -gross, gross), source=args.signal, method=args.method,
                             n_terms=args.n_terms, model=args.model, gate=gate, bin_width=bin_width,
                             progress=not args.no_progress, full=args.json)
-    record = physical_record(result, specimen)
+    record = physical_record(result, specimen, contact)
     record["columns"] = {"torque": columns["units"]["torque"], **({"time": columns["units"]["time"]}
                                                                   if "time" in columns["units"] else {})}
     if "time" in columns:

@@ -28,6 +28,7 @@ import numpy as np
 
 from .. import models, validation
 from ..histories.signal import MIN_BIN_WIDTH, analyse_signal
+from ..records import SignalSummary
 from .signal_files import read_signal, write_table
 
 __all__ = ["analyse_file", "analyse_values", "PROGRESS_SAMPLES", "STATES_IN_JSON", "DEFAULT_BIN_WIDTH", "UNITS"]
@@ -67,7 +68,8 @@ def _progress(enabled: bool, total: int):
 
 
 def analyse_file(path: str, *, method=None, n_terms=None, model=None, output=None, states=None, gate=0.0,
-                 bin_width=None, progress: bool = True, full: bool = True, column=None, parents: bool = False) -> dict:
+                 bin_width=None, progress: bool = True, full: bool = True, column=None,
+                 parents: bool = False) -> SignalSummary:
     """Read the T* samples of ``path`` (``io.signal_files.read_signal``; ``column``: of a CSV with
     several columns) and analyse them with ``analyse_values`` (the other arguments are its own)."""
     label = f"--signal {path}"
@@ -77,8 +79,10 @@ def analyse_file(path: str, *, method=None, n_terms=None, model=None, output=Non
 
 
 def analyse_values(values, *, source: str, method=None, n_terms=None, model=None, output=None, states=None,
-                   gate=0.0, bin_width=None, progress: bool = True, full: bool = True, parents: bool = False) -> dict:
-    """Apply the gate and the memory rules to the T* samples ``values``, count the loops; the JSON-ready summary.
+                   gate=0.0, bin_width=None, progress: bool = True, full: bool = True,
+                   parents: bool = False) -> SignalSummary:
+    """Apply the gate and the memory rules to the T* samples ``values``, count the loops; the summary record
+    (``records.SignalSummary``; ``.as_dict()`` is JSON-ready).
 
     Parameters
     ----------
@@ -141,27 +145,22 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, model=None
         "turning_points": int(result.index.size),
         "dropped_turning_points": result.dropped_turning_points,
         "gate": gate,
-        "dissipated_energy": _finite(result.total_dissipated_energy),
+        "dissipated_energy": result.total_dissipated_energy,
         "closed_loops": result.closed_loops,
         "half_loops": result.half_loops,
-        "loop_energy": _finite(result.loop_energy),
+        "loop_energy": result.loop_energy,
         "method": result.method,
         "n_terms": result.n_terms,
         "model": result.model,
         "states_file": None if states is None else str(states),
         "output_file": None if output is None else str(output),
     }
-    if not full:
-        return summary
-    if short and bin_width is None:
-        summary.update(bin_width=None, cycles=result.cycles())
-    else:
-        width = DEFAULT_BIN_WIDTH if bin_width is None else bin_width
-        summary.update(bin_width=width, cycles=result.rainflow_bins(width))
-    if short:
-        summary["states"] = result.states()
-    return summary
-
-
-def _finite(value: float):
-    return value if value == value and abs(value) != float("inf") else None
+    if full:
+        if short and bin_width is None:
+            summary.update(bin_width=None, cycles=result.cycle_records())
+        else:
+            width = DEFAULT_BIN_WIDTH if bin_width is None else bin_width
+            summary.update(bin_width=width, cycles=result.bin_records(width))
+        if short:
+            summary["states"] = result.state_records()
+    return SignalSummary(**summary)
