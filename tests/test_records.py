@@ -9,7 +9,7 @@ import pytest
 
 from torsional_contact import records, solve
 from torsional_contact.histories import analyse_signal, history
-from torsional_contact.records import ABSENT, QUANTITIES, Record, measured, plain, record
+from torsional_contact.records import ABSENT, QUANTITIES, Record, measured, record
 from torsional_contact.specimen import Specimen, physical_record
 
 SPECIMEN = Specimen(radius="5 mm", normal_force="1 kN", friction=0.6, shear_modulus="80 GPa", gauge_length="20 mm")

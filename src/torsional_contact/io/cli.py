@@ -102,19 +102,6 @@ def _radii(values):
     return None if values is None else validation.coordinates(np.asarray(values, dtype=float), names=("--radii",))
 
 
-def profiles(state, radii, residual: bool = False):
-    """The interface profiles of ``state`` at ``radii`` (``records.ProfileRecord``; the residual traction with
-    ``residual``), or None without radii."""
-    from ..records import ABSENT, ProfileRecord
-
-    if radii is None:
-        return None
-    radii = np.asarray(radii, dtype=float)
-    values = {name: [float(v) for v in getattr(state, name)(radii)] for name in ("traction", "slip")}
-    residual_traction = [float(v) for v in state.residual_traction(radii)] if residual else ABSENT
-    return ProfileRecord(radii.tolist(), values["traction"], values["slip"], residual_traction)
-
-
 def _with_profiles(record, profile) -> dict:
     """The JSON of a result record with its profiles (if any) at the same level."""
     return {**record.as_dict(), **(profile.as_dict() if profile is not None else {})}
@@ -129,7 +116,7 @@ def _cmd_solve(args) -> dict:
     _radii(args.radii)
     solution = solve(stick_radius=args.stick_radius, torque=args.torque, method=args.method, n_terms=args.n_terms,
                      model=args.model)
-    return _with_profiles(solution.record(), profiles(solution, args.radii))
+    return _with_profiles(solution.record(), cli_units.profiles(solution, args.radii))
 
 
 def _cmd_history(args):
@@ -151,7 +138,8 @@ def _cmd_history(args):
                                              models.get(args.model).checked_torque)
         _radii(args.radii)
         states = history(torques, method=args.method, n_terms=args.n_terms, model=args.model)
-        return [_with_profiles(state.record(), profiles(state, args.radii, residual=True)) for state in states]
+        return [_with_profiles(state.record(), cli_units.profiles(state, args.radii, residual=True))
+                for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
     from .output import resolve_output

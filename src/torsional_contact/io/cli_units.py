@@ -28,7 +28,7 @@ import numpy as np
 from .. import models
 
 __all__ = ["SPECIMEN_OPTIONS", "add_specimen_options", "add_fit_parser", "specimen_from", "number_or_quantity",
-           "plain_number", "solve_si", "history_si", "fit_command"]
+           "plain_number", "solve_si", "history_si", "fit_command", "profiles"]
 
 #: The specimen options that go together (dest, flag).
 SPECIMEN_OPTIONS = (("radius", "--radius"), ("normal_force", "--normal-force"), ("friction", "--friction"),
@@ -101,7 +101,6 @@ def solve_si(args, specimen) -> dict:
         state = specimen.solve(torque=_torque_text("--torque", args.torque), method=args.method, n_terms=args.n_terms,
                                model=args.model)
     from ..specimen import physical_record
-    from .cli import profiles
 
     radii = None
     if args.radii is not None:
@@ -109,6 +108,19 @@ def solve_si(args, specimen) -> dict:
         if np.any(radii < 0) or np.any(radii > 1):
             raise ValueError(f"--radii must lie in [0, {specimen.radius:g}] m (0 to the radius)")
     return physical_record([state.normalized.record(), profiles(state.normalized, radii)], specimen, state.contact)
+
+
+def profiles(state, radii, residual: bool = False):
+    """The interface profiles of ``state`` at ``radii`` (``records.ProfileRecord``; the residual traction with
+    ``residual``), or None without radii."""
+    from ..records import ABSENT, ProfileRecord
+
+    if radii is None:
+        return None
+    radii = np.asarray(radii, dtype=float)
+    values = {name: [float(v) for v in getattr(state, name)(radii)] for name in ("traction", "slip")}
+    residual_traction = [float(v) for v in state.residual_traction(radii)] if residual else ABSENT
+    return ProfileRecord(radii.tolist(), values["traction"], values["slip"], residual_traction)
 
 
 def _torque_text(option: str, value):
