@@ -1,4 +1,4 @@
-"""The one writer of user-named files (``torsional_contact.io.output``) and the modules built on it.
+"""The one writer of user-named files (``torsional_contact.output``) and the modules built on it.
 
 Each kind of path is made for real in a temporary directory (regular file, symbolic links,
 FIFO with a reader thread, device nodes made with os.mknod when root, descriptors) and the
@@ -24,9 +24,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from torsional_contact import provenance
-from torsional_contact.io import output
-from torsional_contact.io.output import OutputError, atomic_path, open_output, resolve_output, write_bytes
+from torsional_contact import output, provenance
+from torsional_contact.output import OutputError, atomic_path, open_output, resolve_output, write_bytes
 
 ROOT = Path(__file__).resolve().parents[1]
 IS_ROOT = os.geteuid() == 0
@@ -351,7 +350,7 @@ def test_unwritable_places_are_refused(tmp_path):
     os.chmod(tmp_path / "read-only.csv", 0o444)
     os.chmod(tmp_path / "locked", 0o555)
     code = textwrap.dedent("""
-        from torsional_contact.io.output import OutputError
+        from torsional_contact.output import OutputError
         from torsional_contact.provenance import write_text
         for path in ("locked/out.csv", "read-only.csv"):
             try:
@@ -413,7 +412,7 @@ def test_full_file_system_keeps_the_old_file_and_no_temporary(tmp_path):
 # --------------------------------------------------------------------------- interrupts
 WRITER = textwrap.dedent("""
     import sys, time
-    from torsional_contact.io.output import open_output, atomic_path
+    from torsional_contact.output import open_output, atomic_path
     how, path = sys.argv[1], sys.argv[2]
     if how == "open_output":
         with open_output(path, label="--output") as handle:
@@ -542,7 +541,7 @@ DIRECT_WRITE = re.compile(r"open\([^)]*[\"'][wax]b?\+?[\"']|\.savefig\(|np\.save
 
 
 def test_workflow_scripts_write_only_through_the_writer():
-    """Every output of a workflow script goes through provenance / io.output / workflow/scripts/_plotting.py."""
+    """Every output of a workflow script goes through provenance / output / workflow/scripts/_plotting.py."""
     found = []
     for script in sorted((ROOT / "workflow").rglob("*.py")):
         for line in script.read_text().splitlines():

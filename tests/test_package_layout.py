@@ -125,6 +125,38 @@ def test_package_import_graph_has_no_cycle():
     assert cycles(import_graph()) == []
 
 
+def _package(module: str) -> str:
+    """The package a module belongs to: ``torsional_contact.histories`` for ``torsional_contact.histories.memory``;
+    a module directly in ``torsional_contact`` is its own node."""
+    return ".".join(module.split(".")[:2])
+
+
+def test_no_import_cycle_between_packages():
+    """Between subpackages (and the top-level modules) the imports go one way: e.g. ``io`` (the command line) uses
+    ``output`` and ``provenance``, which never use ``io``."""
+    graph: dict = {}
+    for name, targets in import_graph().items():
+        graph.setdefault(_package(name), set()).update(_package(t) for t in targets if _package(t) != _package(name))
+    for targets in list(graph.values()):
+        for t in targets:
+            graph.setdefault(t, set())
+    assert cycles(graph) == []
+    assert cycles({"p.a": {"p.b"}, "p.b": {"p.a"}}) == [["p.a", "p.b"]]  # the finder sees a package cycle
+
+
+def test_only_the_reference_and_errata_subcommands_import_verification():
+    """The library never imports ``verification`` (solve, history, Specimen, fit); the command line's
+    ``reference`` and ``errata`` subcommands do, lazily, and need the ``[reference]`` extra."""
+    importers = sorted(name for name, targets in import_graph().items()
+                       if not name.startswith("torsional_contact.verification")
+                       and any(t.startswith("torsional_contact.verification") for t in targets))
+    assert importers == ["torsional_contact.io.cli"]
+    source = (SRC / PACKAGE / "io" / "cli.py").read_text()
+    top_level = [line for line in source.splitlines() if line.startswith(("from ..verification", "import "))
+                 and "verification" in line]
+    assert top_level == []  # lazily, inside the subcommands
+
+
 def test_build_time_generators_are_not_imported_at_run_time():
     """Only the table's rebuild entry point (``python -m torsional_contact.curves``) imports the builder."""
     importers = sorted(name for name, targets in import_graph().items()

@@ -1,6 +1,6 @@
 """Writing results: data files with provenance metadata and LaTeX macros, through the one writer.
 
-Every write goes through ``torsional_contact.io.output`` (regular files replaced atomically,
+Every write goes through ``torsional_contact.output`` (regular files replaced atomically,
 symbolic links written through, FIFOs and devices written in place, directories and inputs
 refused; see its docstring).
 """
@@ -13,7 +13,7 @@ import os
 import platform
 from importlib import metadata as _metadata
 
-from .io import output as _output
+from . import output as _output
 
 __all__ = ["provenance", "atomic_path", "write_text", "write_json", "latex_macros", "write_macros", "latex_escape"]
 
@@ -50,17 +50,17 @@ def provenance(**fields) -> dict:
 
 
 def atomic_path(path, suffix="", *, label="path", inputs=(), parents=False):
-    """Yield a temporary path; its content lands at ``path`` only on success (``io.output.atomic_path``).
+    """Yield a temporary path; its content lands at ``path`` only on success (``output.atomic_path``).
 
     A regular file is replaced atomically, a symbolic link written through, a FIFO or device
     written in place; a directory, a missing parent directory (unless ``parents``) or one of
-    ``inputs`` is refused with ``io.output.OutputError`` naming ``label`` and ``path``.
+    ``inputs`` is refused with ``output.OutputError`` naming ``label`` and ``path``.
     """
     return _output.atomic_path(path, suffix, label=label, inputs=inputs, parents=parents)
 
 
 def write_text(path, text: str, *, label="path", inputs=(), parents=False) -> None:
-    """Write ``text`` (UTF-8) to ``path`` through the one writer (``io.output.open_output``)."""
+    """Write ``text`` (UTF-8) to ``path`` through the one writer (``output.open_output``)."""
     with _output.open_output(path, "w", label=label, inputs=inputs, parents=parents) as handle:
         handle.write(text)
 

@@ -126,9 +126,9 @@ def save_figure(fig, pdf_path, png_path=None, dpi=150) -> None:
     """Save ``fig`` as PDF (and PNG), with the generating script in the metadata; the PDF's fonts are
     embedded without their layout tables (``_embed_fonts_without_layout_tables``).
 
-    ``savefig`` writes a temporary file, which ``io.output.atomic_path`` renames onto a regular
+    ``savefig`` writes a temporary file, which ``output.atomic_path`` renames onto a regular
     file (or a symbolic link's target) or copies into a FIFO or device; a directory or a missing
-    directory is refused with ``io.output.OutputError`` naming --pdf or --png.
+    directory is refused with ``output.OutputError`` naming --pdf or --png.
     """
     _embed_fonts_without_layout_tables()  # here, not on import: the PDF backend imports fontTools' subsetter
     with atomic_path(pdf_path, label="--pdf") as tmp:

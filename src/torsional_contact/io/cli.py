@@ -7,7 +7,7 @@ read-only file system, standard output on /dev/full) exit with status 2 and one 
 the option and the path; an interrupt (Ctrl-C) exits with 130 and one line; standard output
 closed early (``| head -c1``) ends the command quietly with status 141 (128 + SIGPIPE, what
 the shell reports for a command that SIGPIPE killed).  Files named on the command line are
-written by ``io.output`` (regular files atomically, symbolic links through, FIFOs and devices
+written by ``output`` (regular files atomically, symbolic links through, FIFOs and devices
 in place; never over an input).
 
 Optional packages: the subcommands ``reference`` and ``errata`` need the ``reference`` extra
@@ -142,7 +142,7 @@ def _cmd_history(args):
                 for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
-    from .output import resolve_output
+    from ..output import resolve_output
 
     if args.parents and args.output is None and args.states is None:
         raise UsageError("--parents needs --output or --states (it creates their missing directories)")
@@ -401,7 +401,7 @@ def main(argv=None) -> int:
             return _error(exc)
         try:
             result = args.handler(args)
-        except OSError as exc:  # io.output's errors name the option and the path
+        except OSError as exc:  # output's errors name the option and the path
             if exc.errno == errno.EPIPE:  # --output /dev/stdout, a FIFO: the reader went away
                 _quiet_standard_output()
                 return 141

@@ -97,7 +97,7 @@ def analyse_values(values, *, source: str, method=None, n_terms=None, model=None
         Table files to write: the per-sample table (columns ``sample``, ``torque``,
         ``gated_torque`` with a gate, ``rigid_rotation``, ``dissipated_energy``) and the
         states (``SignalHistory.state_columns``); format by extension, through the one
-        writer (``io.output``: never over the input; ``parents``: create missing directories).
+        writer (``output``: never over the input; ``parents``: create missing directories).
     gate : float
         Hysteresis gate (torque range in [0, twice the gross-slip torque: 8/3 for the cylinders],
         ``histories.signal.gated_signal``).

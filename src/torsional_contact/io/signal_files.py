@@ -251,9 +251,9 @@ def format_columns(columns, integer_columns=()) -> bytes:
 def write_sample_table(path, header: str, columns, integer_columns=(), chunk: int = 200_000, progress=None, *,
                        label: str = "path", inputs=(), parents: bool = False) -> None:
     """Write ``header`` and the CSV rows of ``columns`` to ``path``, ``chunk`` rows at a time, through the one
-    writer (``io.output.open_output``: atomic for a regular file, in place for a FIFO or device; ``label``,
+    writer (``output.open_output``: atomic for a regular file, in place for a FIFO or device; ``label``,
     ``inputs`` and ``parents`` as there)."""
-    from .output import open_output
+    from ..output import open_output
 
     columns = [np.asarray(c) for c in columns]
     rows = columns[0].size
@@ -280,13 +280,13 @@ def write_table(path, columns: dict, *, metadata: dict | None = None, progress=N
     string); ``.npy``: a structured array with one field per column; otherwise CSV with a
     header of the column names (integer columns as integers, ``write_sample_table``).
     ``progress(rows)`` is called as CSV rows are written.  ``label``, ``inputs``, ``parents``: as
-    for ``io.output.open_output`` (the option named in errors, files never to overwrite, whether
+    for ``output.open_output`` (the option named in errors, files never to overwrite, whether
     to create missing directories).
     """
     import json
 
+    from ..output import open_output
     from ..provenance import provenance
-    from .output import open_output
 
     names = list(columns)
     arrays = [np.asarray(columns[name]) for name in names]
