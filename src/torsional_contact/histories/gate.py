@@ -32,13 +32,9 @@ from __future__ import annotations
 import numpy as np
 
 from .. import models, validation
-from ..criteria import GROSS_SLIP_TORQUE
 from .samples import turning_point_indices, validated_signal
 
-__all__ = ["MAX_GATE", "gated_signal"]
-
-#: Largest torque range of a signal in [-4/3, 4/3]: the largest meaningful gate (and bin width).
-MAX_GATE = 2 * GROSS_SLIP_TORQUE
+__all__ = ["gated_signal"]
 
 
 def _hysteresis_filter(torques: list[float], gate: float) -> list[int]:

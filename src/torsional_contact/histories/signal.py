@@ -66,7 +66,7 @@ from .. import models, validation
 from ..contact_models.base import ContactModel
 from ..records import BinRecord, CycleRecord, SignalStateRecord
 from . import stack_walk
-from .gate import MAX_GATE, gated_signal
+from .gate import gated_signal
 from .samples import turning_point_indices, validated_signal
 
 __all__ = [
@@ -76,7 +76,6 @@ __all__ = [
     "RememberedPoints",
     "SignalHistory",
     "analyse_signal",
-    "MAX_GATE",
     "MIN_BIN_WIDTH",
 ]
 
@@ -427,7 +426,8 @@ def analyse_signal(signal, *, method=None, n_terms=None, model=None, name: str =
         cycle_mean=means,
         cycle_state=states,
         cycle_count=counts,
-        cycle_energy=counts * 4.0 * points(0.5 * ranges)[2] if ranges.size else np.zeros(0),
+        cycle_energy=counts * contact.energy_per_cycle(ranges, method=method, n_terms=n_terms) if ranges.size
+        else np.zeros(0),
         method=method,
         n_terms=n_terms,
         gate=gate,
