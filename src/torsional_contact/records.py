@@ -184,8 +184,8 @@ class SolutionRecord(Record):
 
 
 @record
-class StateRecord(Record):
-    """``InterfaceState.as_dict``: a state of ``history``."""
+class _StateFields(Record):
+    """The fields of an interface state after a torque history (``StateRecord``, ``SignalStateRecord``)."""
 
     torque: float = measured("torque")
     stick_radius: float = measured("length")
@@ -195,28 +195,24 @@ class StateRecord(Record):
     regime: str = plain()
     dissipated_energy: float = measured("energy")
     direction: int = plain()
+
+    twist_keys = ("torque", "rigid_rotation")
+
+
+@record
+class StateRecord(_StateFields):
+    """``InterfaceState.as_dict``: a state of ``history``."""
+
     method: str | None = plain()
     n_terms: int | None = plain()
     model: str = plain()
 
-    twist_keys = ("torque", "rigid_rotation")
-
 
 @record
-class SignalStateRecord(Record):
+class SignalStateRecord(_StateFields):
     """``SignalHistory.states``: the state at a turning point of a sampled signal (``index``: its sample)."""
 
     index: int = plain()
-    torque: float = measured("torque")
-    stick_radius: float = measured("length")
-    slip_fronts: list = measured("length")
-    turning_points: list = measured("torque")
-    rigid_rotation: float = measured("rotation")
-    regime: str = plain()
-    dissipated_energy: float = measured("energy")
-    direction: int = plain()
-
-    twist_keys = ("torque", "rigid_rotation")
 
 
 @record
@@ -232,17 +228,12 @@ class CycleRecord(Record):
 
 
 @record
-class BinRecord(Record):
-    """``SignalHistory.rainflow_bins``: the loops of one bin of the rainflow matrix."""
+class BinRecord(CycleRecord):
+    """``SignalHistory.rainflow_bins``: the loops of one bin of the rainflow matrix (``range`` and ``mean`` its
+    centre, ``range_bin`` and ``mean_bin`` its edges)."""
 
-    range: float = measured("torque")
-    mean: float = measured("torque")
     range_bin: list = measured("torque")
     mean_bin: list = measured("torque")
-    count: float = plain()
-    dissipated_energy: float = measured("energy")
-
-    si_aliases = {"energy": "dissipated_energy"}
 
 
 @record

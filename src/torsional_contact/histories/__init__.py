@@ -7,53 +7,10 @@ Fig. 5) and ``energy`` (frictional work and dissipation).  Default method: the
 Abel-Fredholm method (``fast``) through the interpolants of ``curves``.
 """
 
-from .energy import (
-    cumulative_slip,
-    dissipation_from_loop_area,
-    dissipation_per_cycle,
-    frictional_work,
-    loading_work,
-    slip_increments,
-    threshold_asymptotics,
-)
-from .loops import Loop, hysteresis_loop, loop_work, relaxation_profiles, sample_path, tangent_compliance
-from .memory import (
-    CYCLIC_SLIP_RANGE,
-    DEFAULT_METHOD,
-    InterfaceState,
-    TurningPoint,
-    advance,
-    history,
-    initial_state,
-    monotonic_solution,
-    turning_points,
-)
-from .signal import SignalHistory, analyse_signal, turning_point_indices
+from . import energy, loops, memory, signal
+from .energy import *  # noqa: F403 - the public names of each module, listed in its own __all__
+from .loops import *  # noqa: F403
+from .memory import *  # noqa: F403
+from .signal import *  # noqa: F403
 
-__all__ = [
-    "CYCLIC_SLIP_RANGE",
-    "DEFAULT_METHOD",
-    "InterfaceState",
-    "TurningPoint",
-    "Loop",
-    "SignalHistory",
-    "advance",
-    "history",
-    "initial_state",
-    "monotonic_solution",
-    "turning_points",
-    "turning_point_indices",
-    "analyse_signal",
-    "sample_path",
-    "hysteresis_loop",
-    "loop_work",
-    "tangent_compliance",
-    "relaxation_profiles",
-    "slip_increments",
-    "cumulative_slip",
-    "frictional_work",
-    "loading_work",
-    "dissipation_per_cycle",
-    "dissipation_from_loop_area",
-    "threshold_asymptotics",
-]
+__all__ = [*memory.__all__, *loops.__all__, *signal.__all__, *energy.__all__]

@@ -218,10 +218,10 @@ class SignalHistory:
         for k in range(self.index.size):
             remembered = memory[k]
             out.append(SignalStateRecord(
-                int(self.index[k]), float(self.torque[k]), float(self.stick_radius[k]),
+                float(self.torque[k]), float(self.stick_radius[k]),
                 [float(self.front[j]) for j in remembered if self.front[j] < 1.0],
                 [float(self.torque[j]) for j in remembered], float(self.rigid_rotation[k]), regime[k],
-                float(self.dissipated_energy[k]), int(self.direction[k])))
+                float(self.dissipated_energy[k]), int(self.direction[k]), int(self.index[k])))
         return out
 
     def states(self) -> list[dict]:
@@ -284,7 +284,7 @@ class SignalHistory:
         keys, which = np.unique(i * span + (j - low), return_inverse=True)
         counts = np.bincount(which, weights=self.cycle_count, minlength=keys.size)
         energy = np.bincount(which, weights=self.cycle_energy, minlength=keys.size)
-        return [BinRecord((a + 0.5) * w, (m + 0.5) * w, [a * w, (a + 1) * w], [m * w, (m + 1) * w], c, e)
+        return [BinRecord((a + 0.5) * w, (m + 0.5) * w, c, e, [a * w, (a + 1) * w], [m * w, (m + 1) * w])
                 for a, m, c, e in zip((keys // span).tolist(), (keys % span + low).tolist(), counts.tolist(),
                                       energy.tolist(), strict=True)]
 
