@@ -279,7 +279,8 @@ def build_parser() -> argparse.ArgumentParser:
     group.add_argument("--stick-radius", type=cli_units.number_or_quantity,
                        help="b/a in [0, 1]; with the specimen options a length, e.g. '2 mm'")
     group.add_argument("--torque", type=cli_units.number_or_quantity,
-                       help="T* = 2T/(f F a) in [-4/3, 4/3]; with the specimen options a torque, e.g. '1.8 N m'")
+                       help="T* = 2T/(f F a), within the model's gross-slip torque ([-4/3, 4/3] for the cylinders); "
+                       "with the specimen options a torque, e.g. '1.8 N m'")
     _add_solver_options(p)
     cli_units.add_specimen_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -287,7 +288,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("history", help="interface states along a torque history (memory rules)", epilog=NULL_EPILOG)
     source = p.add_mutually_exclusive_group(required=True)
     source.add_argument("--turning-points", type=cli_units.number_or_quantity, nargs="+",
-                        help="T* after each step, in [-4/3, 4/3] (with the specimen options: torques, N m)")
+                        help="T* after each step, within the model's gross-slip torque ([-4/3, 4/3] for the cylinders; "
+                        "with the specimen options: torques, N m)")
     source.add_argument("--signal", help="sampled T*: text/CSV file, one value per line (# comments, a header line "
                         "of names and blank lines allowed) or a column of a CSV (--column), or a .npy array; with "
                         "the specimen options a CSV whose header carries units, e.g. 'time [s],torque [N m]'")
