@@ -207,7 +207,7 @@ def fit_command(args) -> dict:
     try:
         result = fit_loop(columns["torque"], columns["twist"], radius=args.radius, normal_force=args.normal_force,
                           torque_noise=args.torque_noise, twist_noise=args.twist_noise, bootstrap=args.bootstrap,
-                          seed=args.seed)
+                          seed=args.seed, time=columns.get("time"))
     except ValueError as exc:
         text = str(exc)
         for key, flag in names.items():
