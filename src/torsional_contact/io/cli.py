@@ -142,16 +142,13 @@ def _cmd_history(args):
                 for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
-    from ..output import resolve_output
+    from ..output import distinct_outputs
 
     if args.parents and args.output is None and args.states is None:
         raise UsageError("--parents needs --output or --states (it creates their missing directories)")
-    tables = [(option, path) for option, path in (("--output", args.output), ("--states", args.states))
-              if path is not None]
-    if len(tables) == 2 and os.path.abspath(args.output) == os.path.abspath(args.states):
-        raise UsageError(f"--states and --output name the same file ({args.output}): give two paths")
-    for option, path in tables:  # refuse a bad table path before the analysis, not after it
-        resolve_output(path, label=option, inputs=(("--signal", args.signal),), parents=args.parents)
+    # refuse a bad table path, or two names of one file, before the analysis, not after it
+    distinct_outputs((("--output", args.output), ("--states", args.states)), inputs=(("--signal", args.signal),),
+                     parents=args.parents)
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, model=args.model, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
                         progress=not args.no_progress, full=args.json, column=args.column,
@@ -414,8 +411,7 @@ def main(argv=None) -> int:
             extra = extras.extra_for(exc.name or "")
             if extra is None:
                 raise
-            return _error(f"{args.command} needs the optional package {exc.name}, not installed: "
-                          f"{extras.install_hint(extra)}")
+            return _error(extras.missing_message(args.command, [exc.name], extra))
         try:
             _print_result(args, result)
         except OSError as exc:
