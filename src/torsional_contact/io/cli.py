@@ -358,15 +358,21 @@ def _quiet_standard_output() -> None:
 
 
 def _print_result(args, result) -> None:
+    if not getattr(args, "json", False) and hasattr(result, "text"):  # a report of its own (fit)
+        print(result.text())
+        sys.stdout.flush()
+        return
     result = _finite_record(result)
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
     elif isinstance(result, list):  # one record per line
         for record in result:
             print(json.dumps(record, allow_nan=False))
-    else:
+    else:  # one "key: value" line each; nested values as JSON, never a Python repr
         for key, value in result.items():
-            print(f"{key}: {value}")
+            shown = json.dumps(value, allow_nan=False, ensure_ascii=False) if isinstance(value, (dict, list)) or \
+                value is None or isinstance(value, bool) else value
+            print(f"{key}: {shown}")
     sys.stdout.flush()
 
 
