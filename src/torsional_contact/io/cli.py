@@ -144,6 +144,9 @@ def _cmd_history(args):
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
     from ..output import distinct_outputs
 
+    args.gate = cli_units.plain_number("--gate", args.gate)
+    args.bin_width = cli_units.plain_number("--bin-width", args.bin_width)
+
     if args.parents and args.output is None and args.states is None:
         raise UsageError("--parents needs --output or --states (it creates their missing directories)")
     # refuse a bad table path, or two names of one file, before the analysis, not after it
@@ -298,11 +301,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--states", help="with --signal: table of the states at every turning point (.npz, .npy or CSV; "
                    "the JSON lists them only for signals of at most 1000 turning points)")
     p.add_argument("--parents", action="store_true", help="create the missing directories of --output and --states")
-    p.add_argument("--gate", type=real_argument, default=None,
+    p.add_argument("--gate", type=cli_units.number_or_quantity, default=None,
                    help="with --signal: drop reversals smaller than this torque range before the memory rules "
                    "(hysteresis filter; changes the history: see docs/conventions.md; default 0, none; "
                    "with the specimen options in N m)")
-    p.add_argument("--bin-width", type=real_argument, default=None,
+    p.add_argument("--bin-width", type=cli_units.number_or_quantity, default=None,
                    help="with --signal: width in T* of the range and mean bins of the rainflow matrix in the JSON "
                    "(default: exact grouping up to 1000 turning points, else 0.05; with the specimen options in N m)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
