@@ -86,11 +86,17 @@ def specimen_from(args):
     try:
         return Specimen(**values, gauge_length=args.gauge_length, model=getattr(args, "model", None))
     except ValueError as exc:  # name the option, not the keyword
-        text = str(exc)
-        for dest, flag in (*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length")):
-            if text.startswith(dest + " "):
-                text = flag + text[len(dest):]
-        raise ValueError(text) from None
+        raise ValueError(option_named(str(exc), dict((*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length"))))) \
+            from None
+
+
+def option_named(text: str, names: dict) -> str:
+    """A message of the API (starting with a keyword, "radius must ..." or "radius: ...") with the keyword replaced
+    by its command-line option."""
+    for key, flag in names.items():
+        if text.startswith((key + " ", key + ":")):
+            return flag + text[len(key):]
+    return text
 
 
 def solve_si(args, specimen) -> dict:
@@ -288,11 +294,7 @@ def fit_command(args) -> dict:
                           torque_noise=args.torque_noise, twist_noise=args.twist_noise, bootstrap=args.bootstrap,
                           seed=args.seed, confidence=args.confidence)
     except ValueError as exc:
-        text = str(exc)
-        for key, flag in names.items():
-            if text.startswith(key + " "):
-                text = flag + text[len(key):]
-        raise ValueError(text) from None
+        raise ValueError(option_named(str(exc), names)) from None
     return fit_outputs(args, result, columns)
 
 

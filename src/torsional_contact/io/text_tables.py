@@ -171,20 +171,23 @@ def _fields(line: str, delimiter: str, header: bool = False) -> list[str] | None
         return None
 
 
-def _numeric(fields: list[str] | None, comma: bool) -> bool:
-    return bool(fields) and all(_number(f, comma) is not None for f in fields)
+def _numeric(fields: list[str] | None, delimiter: str) -> bool:
+    """Whether every field is a number, with decimal points or (the separator not a comma) decimal commas."""
+    if not fields:
+        return False
+    return all(_number(f, False) is not None for f in fields) or (
+        delimiter != "," and all(_number(f, True) is not None for f in fields))
 
 
 def _layout(content: list[tuple[int, str]], delimiter: str):
-    """(index in ``content`` of the first data line, number of fields, decimal comma) under ``delimiter``, or None.
+    """(index in ``content`` of the first data line, number of fields) under ``delimiter``, or None.
 
     The data start at the first line of numbers whose field count the line above it (the header) shares, or at
     the first content line when it holds numbers already (no header)."""
-    comma = delimiter != ","
     previous = None
     for index, (_, line) in enumerate(content):
         fields = _fields(line, delimiter)
-        if _numeric(fields, comma):
+        if _numeric(fields, delimiter):
             if index == 0:
                 return 0, len(fields)
             if previous is not None and len(previous) == len(fields):
