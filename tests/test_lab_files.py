@@ -243,8 +243,8 @@ def test_constant_loop_names_the_file_not_a_numpy_repr(tmp_path):
 
 def test_gate_takes_units_like_every_other_option(tmp_path):
     path = tmp_path / "signal.csv"
-    t = np.linspace(0.0, 2.0, 201)
-    path.write_text("time [s],torque [N m]\n" + "".join(f"{float(a)!r},{1.8 * math.sin(2 * math.pi * a)!r}\n" for a in t))
+    t = [k / 100 for k in range(201)]
+    path.write_text("time [s],torque [N m]\n" + "".join(f"{a!r},{1.8 * math.sin(2 * math.pi * a)!r}\n" for a in t))
     specimen = ["--radius", "5 mm", "--normal-force", "1 kN", "--friction", "0.6", "--shear-modulus", "80 GPa"]
     status, out, err = run(["history", "--signal", str(path), *specimen, "--gate", "0.15 N m", "--json"])
     assert status == 0, err
@@ -317,3 +317,21 @@ def test_residuals_are_noise_sized_and_the_plot_is_written(tmp_path):
     if "--plot" in options:
         assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         assert fitted["outputs"] == {"--residuals": str(residuals), "--plot": str(plot)}
+
+
+def test_shipped_export_is_the_record_and_gives_its_friction(tmp_path):
+    """notebooks/data/lab_export.csv is what workflow/scripts/make_lab_export.py writes from lab_loop.csv, and its
+    fit (with the column options of the README) gives the friction of lab_loop.csv."""
+    import importlib.util as util
+
+    from lab_exports import RECORD, ROOT
+
+    spec = util.spec_from_file_location("make_lab_export", ROOT / "workflow" / "scripts" / "make_lab_export.py")
+    script = util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    shipped = ROOT / "notebooks" / "data" / "lab_export.csv"
+    assert shipped.read_bytes() == script.export(RECORD.read_text(encoding="utf-8")).encode("utf-8")
+    options = ["--torque-column", "Moment M_t", "--twist-column", "Drehwinkel phi"]
+    export, plain = _fit_json(shipped, *options), _fit_json(RECORD)
+    assert abs(export["friction"]["value"] - plain["friction"]["value"]) <= 1e-6
+    assert export["input"]["skipped_lines"] == 5 and export["input"]["decimal_mark"] == ","

@@ -44,11 +44,24 @@ class FitRecord(dict):
         return text_report(self)
 
 
-def fit_provenance(report: dict) -> dict:
-    """The provenance of a fit: the input as read (``io.lab_files``) and the package versions."""
-    from ..provenance import provenance
+#: The packages a fit runs on (the core: no extra is imported to name its version).
+FIT_PACKAGES = ("torsional_contact", "numpy", "scipy", "pint")
 
-    return provenance(input=report)
+
+def fit_provenance(report: dict) -> dict:
+    """The provenance of a fit: the input as read (``io.lab_files``), the versions of the packages it ran on,
+    Python and the machine."""
+    import platform
+    from importlib import metadata
+
+    versions = {}
+    for name in FIT_PACKAGES:
+        try:
+            versions[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            versions[name] = None
+    return {"input": report, "packages": versions, "python": platform.python_version(),
+            "machine": f"{platform.system()} {platform.machine()}, {os.cpu_count()} cores"}
 
 
 def _slope(fitted: np.ndarray, twist: np.ndarray) -> np.ndarray:
