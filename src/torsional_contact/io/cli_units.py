@@ -192,8 +192,9 @@ def add_fit_parser(sub, parser_class) -> None:
     p.add_argument("--radius", required=True, help="cylinder radius a, e.g. '5 mm' (a number: m)")
     p.add_argument("--normal-force", required=True, help="normal force F, e.g. '1 kN' (a number: N)")
     p.add_argument("--torque-noise", help="standard deviation of the torque noise, e.g. '0.01 N m' (default: "
-                   "estimated)")
-    p.add_argument("--twist-noise", help="standard deviation of the twist noise, e.g. '1e-5 rad' (default: estimated)")
+                   "estimated, floored at the channel's resolution); state it for a commanded (exact) channel")
+    p.add_argument("--twist-noise", help="standard deviation of the twist noise, e.g. '1e-5 rad' (default: estimated, "
+                   "floored at the channel's resolution)")
     p.add_argument("--bootstrap", type=int, default=0, metavar="N",
                    help="add bias-corrected percentile intervals from N parametric-bootstrap refits (20 to 100000; "
                         "costs about N fits; default 0: profile-likelihood intervals only)")
@@ -279,8 +280,6 @@ def fit_command(args) -> dict:
     from ..fitting import MIN_SAMPLES, fit_loop
     from .lab_files import read_lab_columns
 
-    if (args.torque_noise is None) != (args.twist_noise is None):
-        raise ValueError("give both --torque-noise and --twist-noise, or neither (then both are estimated)")
     fit_outputs_checked(args)
     columns = read_lab_columns(args.loop, ["torque", "twist"], ["time"], label=f"--loop {args.loop}",
                                min_rows=MIN_SAMPLES, encoding=args.encoding,
