@@ -307,9 +307,10 @@ def test_residuals_are_noise_sized_and_the_plot_is_written(tmp_path):
     _, torque, _ = record()
     assert_close(table["torque"], torque, "written to 16 digits", rtol=1e-15)
     names = read_text_table(residuals).header
-    assert names == ["sample", "time [s]", "torque [N m]", "twist [rad]", "fitted_torque [N m]",
+    assert names == ["sample", "time [s]", "torque [N m]", "twist [rad]", "spike", "fitted_torque [N m]",
                      "torque_residual [N m]", "normalized_residual"]
-    normalised = read_text_table(residuals).column(6, "normalized_residual")
+    assert not read_text_table(residuals).column(4, "spike").any()
+    normalised = read_text_table(residuals).column(7, "normalized_residual")
     # the record's noise is white and Gaussian at the levels the fit estimates: the normalised residuals are about
     # standard normal; their standard deviation from 721 samples has a standard error 1/sqrt(2 x 721) = 0.026
     # (4 standard errors: 0.11), and the fit's own noise scale moves it by |noise_scale - 1|
@@ -317,6 +318,21 @@ def test_residuals_are_noise_sized_and_the_plot_is_written(tmp_path):
     if "--plot" in options:
         assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
         assert fitted["outputs"] == {"--residuals": str(residuals), "--plot": str(plot)}
+
+
+def test_spikes_removed_by_the_fit_are_marked_in_the_residuals(tmp_path):
+    t, torque, twist = record()
+    torque = list(torque)
+    torque[100] += 1.5  # 150 times the torque noise: a spike the fit removes
+    path = tmp_path / "spiky.csv"
+    path.write_text("torque [N m],twist [rad]\n" + "".join(f"{q!r},{w!r}\n" for q, w in zip(torque, twist,
+                                                                                              strict=True)))
+    residuals = tmp_path / "r.csv"
+    result = _fit_json(path, "--residuals", str(residuals))
+    table = read_text_table(residuals)
+    spike = table.column(3, "spike")
+    assert result["spikes"] == int(spike.sum()) >= 1 and spike[100] == 1
+    assert np.isnan(table.column(6, "normalized_residual")[spike == 1]).all()
 
 
 def test_shipped_export_is_the_record_and_gives_its_friction(tmp_path):

@@ -251,6 +251,7 @@ def fit_outputs_checked(args) -> None:
 
 def fit_outputs(args, result, columns) -> dict:
     """The fit's record with the input's provenance, after writing --residuals and --plot."""
+    from .. import units
     from .fit_report import FitRecord, fit_provenance, plot_fit, residual_columns, write_residuals
 
     record = FitRecord(result.as_dict())
@@ -258,7 +259,9 @@ def fit_outputs(args, result, columns) -> dict:
     record["provenance"] = fit_provenance(columns["report"])
     outputs = {}
     if args.residuals is not None or args.plot is not None:
-        table = residual_columns(result, columns)
+        noise = [None if value is None else units.positive_si(key, value, kind) for key, value, kind in
+                 (("torque_noise", args.torque_noise, "torque"), ("twist_noise", args.twist_noise, "angle"))]
+        table = residual_columns(result, columns, *noise)
         if args.residuals is not None:
             write_residuals(args.residuals, table, inputs=(("--loop", args.loop),), parents=args.parents)
             outputs["--residuals"] = args.residuals

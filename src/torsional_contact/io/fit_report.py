@@ -80,20 +80,39 @@ def _slope(fitted: np.ndarray, twist: np.ndarray) -> np.ndarray:
     return slope
 
 
-def residual_columns(result, columns: dict) -> dict:
-    """name [unit] -> array: sample, time (if read), torque, twist, fitted torque, torque residual, normalised
-    residual (module docstring).  ``result``: a ``LoopFit``; ``columns``: ``read_lab_columns``'s arrays (SI)."""
+def _kept(result, torque, twist, torque_noise, twist_noise) -> np.ndarray:
+    """The indices of the samples the fit kept (all but the spikes it removed, ``fitting.record_checks``)."""
+    fitted = np.asarray(result.fitted_torque)
+    if fitted.size == torque.size:
+        return np.arange(torque.size)
+    from ..fitting.record_checks import prepared_record
+
+    kept = prepared_record(torque, twist, torque_noise, twist_noise, check=False).kept
+    if kept.size != fitted.size:  # pragma: no cover - the fit and the check disagree on the spikes
+        raise ValueError(f"the fit reports {fitted.size} fitted torques for {kept.size} samples kept")
+    return kept
+
+
+def residual_columns(result, columns: dict, torque_noise=None, twist_noise=None) -> dict:
+    """name [unit] -> array: sample, time (if read), torque, twist, spike (1: removed before the fit), fitted
+    torque, torque residual, normalised residual (module docstring; NaN for a spike).  ``result``: a ``LoopFit``;
+    ``columns``: ``read_lab_columns``'s arrays (SI); ``torque_noise``, ``twist_noise``: the levels given to the fit
+    (N m, rad; None: estimated), which decide the spikes it removed."""
     torque, twist = np.asarray(columns["torque"], float), np.asarray(columns["twist"], float)
-    fitted = np.asarray(result.fitted_torque, dtype=float)
-    if fitted.shape != torque.shape:
-        raise ValueError(f"the fit reports {fitted.size} fitted torques for {torque.size} samples")
+    kept = _kept(result, torque, twist, torque_noise, twist_noise)
+    fitted = np.full(torque.size, np.nan)
+    fitted[kept] = np.asarray(result.fitted_torque, dtype=float)
     s_t, s_theta = float(result.noise["torque"]), float(result.noise["twist"])
     residual = torque - fitted
-    normalised = residual / np.sqrt(s_t**2 + (_slope(fitted, twist) * s_theta) ** 2)
+    normalised = np.full(torque.size, np.nan)
+    slope = _slope(fitted[kept], twist[kept])
+    normalised[kept] = residual[kept] / np.sqrt(s_t**2 + (slope * s_theta) ** 2)
+    spike = np.ones(torque.size, dtype=np.int64)
+    spike[kept] = 0
     out = {"sample": np.arange(torque.size)}
     if "time" in columns:
         out["time [s]"] = np.asarray(columns["time"], float)
-    out.update({"torque [N m]": torque, "twist [rad]": twist, "fitted_torque [N m]": fitted,
+    out.update({"torque [N m]": torque, "twist [rad]": twist, "spike": spike, "fitted_torque [N m]": fitted,
                 "torque_residual [N m]": residual, "normalized_residual": normalised})
     return out
 
@@ -129,6 +148,7 @@ def plot_fit(path, table: dict, record: dict, *, title: str, inputs=(), parents:
 
     torque, twist = table["torque [N m]"], table["twist [rad]"]
     fitted, normalised = table["fitted_torque [N m]"], table["normalized_residual"]
+    spikes = table["spike"].astype(bool)
     spans = _cycles(record)
     extra = min(len(spans), 6) if len(spans) > 1 else 0
     figure = plt.figure(figsize=(7.0 + 2.4 * math.ceil(extra / 2), 6.4), constrained_layout=True)
@@ -137,6 +157,8 @@ def plot_fit(path, table: dict, record: dict, *, title: str, inputs=(), parents:
     scale = 1e3  # mrad: the twists of a loop
     loop.plot(twist * scale, torque, ".", ms=2.5, color="0.55", label="measured")
     loop.plot(twist * scale, fitted, "-", lw=1.2, color="C0", label="fitted model")
+    if spikes.any():
+        loop.plot(twist[spikes] * scale, torque[spikes], "x", ms=5, color="C1", label="spikes (removed)")
     loop.set_xlabel("twist $\\theta$ [mrad]")
     loop.set_ylabel("torque $T$ [N m]")
     loop.set_title(title, fontsize=9)
@@ -248,13 +270,15 @@ def text_report(record: dict) -> str:
                  f"{_number(record.get('torque_residual_rms'), 'N m')} (torque)")
     if record.get("message"):
         lines.append(f"message: {record['message']}")
+    if record.get("spikes"):
+        lines.append(f"spikes removed before the fit: {record['spikes']} sample(s) (marked in --residuals)")
     warnings = record.get("warnings") or []
     lines.append("warnings: none" if not warnings else "warnings:")
     lines += [f"  - {w}" for w in warnings]
     shown = {"input", "provenance", "units", "friction", "shear_modulus", "compliance", "rig_compliance",
              "twist_offset", "correlation", "noise", "noise_scale", "residual_rms", "torque_residual_rms", "message",
              "warnings", "radius", "normal_force", "samples", "reversals", "dof", "regime", "slip_detected",
-             "stick_test", "stick_critical", "interval_method", "confidence", "cycles", "outputs"}
+             "stick_test", "stick_critical", "interval_method", "confidence", "cycles", "outputs", "spikes"}
     cycles = record.get("cycles") or []
     if cycles:
         lines.append(f"cycles ({len(cycles)}):")
