@@ -351,3 +351,20 @@ def test_shipped_export_is_the_record_and_gives_its_friction(tmp_path):
     export, plain = _fit_json(shipped, *options), _fit_json(RECORD)
     assert abs(export["friction"]["value"] - plain["friction"]["value"]) <= 1e-6
     assert export["input"]["skipped_lines"] == 5 and export["input"]["decimal_mark"] == ","
+
+
+def test_history_reads_an_export_with_named_columns(tmp_path):
+    specimen = ["--radius", "5 mm", "--normal-force", "1 kN", "--friction", "0.6", "--shear-modulus", "80 GPa"]
+    plain, export = tmp_path / "plain.csv", tmp_path / "export.csv"
+    torques = [0.0, 1.8, -1.8, 1.8, -1.8, 1.2]  # T* = 1.2: the cylinders slip
+    plain.write_text("time [s],torque [N m]\n" + "".join(f"{k},{q!r}\n" for k, q in enumerate(torques)))
+    export.write_bytes(("Rig: 3\r\nZeit [s];Moment M [N·m]\r\n" + "".join(
+        f"{k};{q!r}\r\n".replace(".", ",") for k, q in enumerate(torques))).encode("cp1252"))
+    assert "--torque-column NAME" in one_error_line(*run(["history", "--signal", str(export), *specimen]))
+    results = [run(["history", "--signal", str(path), *specimen, *options, "--json"]) for path, options in
+               ((plain, []), (export, ["--torque-column", "moment m"]))]
+    assert [r[0] for r in results] == [0, 0], results
+    first, second = (json.loads(r[1]) for r in results)
+    assert first["dissipated_energy"] == second["dissipated_energy"] > 0
+    assert "needs --signal and the specimen options" in one_error_line(
+        *run(["history", "--turning-points", "0", "1", "--torque-column", "x"]))

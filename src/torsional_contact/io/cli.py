@@ -128,6 +128,11 @@ def _cmd_history(args):
     specimen = cli_units.specimen_from(args)
     if specimen is not None:
         return cli_units.history_si(args, specimen)
+    for option, value in (("--torque-column", args.torque_column), ("--time-column", args.time_column),
+                          ("--encoding", args.encoding)):
+        if value is not None:
+            raise UsageError(f"{option} reads a lab export with units: it needs --signal and the specimen options "
+                             "(for a file of T* values, --column chooses the column)")
     if args.signal is None:
         args.turning_points = [cli_units.plain_number("--turning-points", v) for v in args.turning_points]
         for option, value in (("--output", args.output), ("--states", args.states), ("--gate", args.gate),
@@ -311,6 +316,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
     cli_units.add_specimen_options(p)
+    cli_units.add_fit_input_options(p, ("torque", "time"), " (--signal with the specimen options)")
     p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision solution: the truncated weak form, or (--method fast) "

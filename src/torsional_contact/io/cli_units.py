@@ -160,7 +160,8 @@ def history_si(args, specimen):
     from .lab_files import read_lab_columns
 
     label = f"--signal {args.signal}"
-    columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label)
+    columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label, encoding=args.encoding,
+                               columns=named_columns(args, ("torque", "time")))
     contact = specimen.contact if args.model is None else models.get(args.model)
     gross = contact.gross_slip_torque
     torque_star = columns["torque"] / specimen.torque_scale
@@ -205,10 +206,14 @@ def add_fit_parser(sub, parser_class) -> None:
     p.set_defaults(handler=fit_command)
 
 
-def add_fit_input_options(p) -> None:
-    """How ``fit`` reads the lab export: the columns by name and the encoding (``io.lab_files``)."""
-    group = p.add_argument_group("reading the export (separator, decimal mark and metadata lines are found)")
-    for role, example in (("torque", "'Drehmoment'"), ("twist", "'Winkel'"), ("time", "'Zeit'")):
+def add_fit_input_options(p, roles=("torque", "twist", "time"), condition: str = "") -> None:
+    """How ``fit`` (and ``history --signal`` with the specimen options: ``roles`` torque and time, ``condition``
+    saying so) reads the lab export: the columns by name and the encoding (``io.lab_files``)."""
+    group = p.add_argument_group("reading the export (separator, decimal mark and metadata lines are found)"
+                                 + condition)
+    examples = {"torque": "'Drehmoment'", "twist": "'Winkel'", "time": "'Zeit'"}
+    for role in roles:
+        example = examples[role]
         group.add_argument(f"--{role}-column", metavar="NAME",
                            help=f"the header name of the {role} column (e.g. {example}), when it is not "
                            f"'{role}' or a synonym of it")
@@ -226,6 +231,12 @@ def add_fit_output_options(p) -> None:
                        "normalised residual (CSV; .npz or .npy: binary)")
     group.add_argument("--parents", action="store_true", help="create the missing directories of --plot and "
                        "--residuals")
+
+
+def named_columns(args, roles=("torque", "twist", "time")) -> dict:
+    """role -> header name given with --ROLE-column (``read_lab_columns``'s ``columns``)."""
+    return {role: getattr(args, f"{role}_column") for role in roles if getattr(args, f"{role}_column", None)
+            is not None}
 
 
 def fit_outputs_checked(args) -> None:
@@ -285,9 +296,7 @@ def fit_command(args) -> dict:
 
     fit_outputs_checked(args)
     columns = read_lab_columns(args.loop, ["torque", "twist"], ["time"], label=f"--loop {args.loop}",
-                               min_rows=MIN_SAMPLES, encoding=args.encoding,
-                               columns={role: getattr(args, f"{role}_column") for role in ("torque", "twist", "time")
-                                        if getattr(args, f"{role}_column") is not None})
+                               min_rows=MIN_SAMPLES, encoding=args.encoding, columns=named_columns(args))
     constant_columns_refused(f"--loop {args.loop}", columns)
     names = {"radius": "--radius", "normal_force": "--normal-force", "torque_noise": "--torque-noise",
              "twist_noise": "--twist-noise", "bootstrap": "--bootstrap"}
