@@ -24,7 +24,7 @@ def _noise(amplitude):
     return 0.005 * 2.0 * amplitude * RIG.slip_torque
 
 
-def _fit(time, torque, twist, rig=RIG, **kwargs):
+def _fit(clock, torque, twist, rig=RIG, **kwargs):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return fit_loop(torque, twist, radius=rig.radius, normal_force=rig.normal_force, **kwargs)
@@ -115,3 +115,42 @@ def test_quantised_channel_noise_floor():
     assert record_checks.quantisation_step(values) == pytest.approx(step, rel=1e-9)
     assert record_checks.noise_floor(values, 0.0, 1.0) == pytest.approx(step / np.sqrt(12.0), rel=1e-9)
     assert record_checks.quantisation_step(rng.standard_normal(100)) == 0.0
+
+
+@pytest.mark.parametrize("defect, word", [
+    ({"drift": 1e-5}, "drift"),
+    ({"torque_offset": 0.1}, "torque offset"),
+    ({"lag": 5e-3}, "lag"),
+    ({"lag": 5e-3, "drift": 1e-5}, "lag"),
+])
+def test_rig_defects_are_covered_or_named(defect, word):
+    rig = RIG.with_(**defect)
+    for seed in (11, 12):
+        time, torque, twist = torque_controlled(rig, 1.3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE,
+                                                seed=seed)
+        fit = _fit(time, torque, twist, time=time)
+        _covers_or_warns(fit, RIG.friction, word)
+
+
+def test_defects_found_are_named_with_their_size():
+    rig = RIG.with_(torque_offset=0.1, lag=5e-3)
+    time, torque, twist = torque_controlled(rig, 1.3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE, seed=13)
+    fit = _fit(time, torque, twist, time=time)
+    named = {w.split(":")[0]: w for w in fit.warnings}
+    assert {"torque offset", "lag"} <= named.keys()
+    offset = float(named["torque offset"].split(":")[1].split()[0])
+    lag = float(named["lag"].split(":")[1].split()[0])
+    # within a few times the noise's resolution of them: 0.02 N m of noise over 400 samples, 1e-5 rad over a slope
+    assert abs(offset - 0.1) < 0.03
+    assert abs(lag - 5e-3) < 1.5e-3
+    unhandled = _fit(time, torque, twist, time=time, check_defects=False)
+    assert unhandled.warnings == ()
+
+
+@pytest.mark.parametrize("seed", range(20, 23))
+def test_clean_records_raise_no_defect(seed):
+    for kind, amplitude in ((torque_controlled, 1.3), (torque_controlled, 0.8), (twist_controlled, 2.5e-3)):
+        time, torque, twist = kind(RIG, amplitude, twist_noise=TWIST_NOISE, seed=seed)
+        time, torque, twist = kind(RIG, amplitude, torque_noise=0.005 * np.ptp(torque), twist_noise=TWIST_NOISE,
+                                   seed=seed)
+        assert _fit(time, torque, twist, time=time).warnings == ()

@@ -119,6 +119,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 from scipy import optimize, special  # quantiles from special: scipy.stats costs 0.5 s more to import
@@ -126,6 +127,7 @@ from scipy import optimize, special  # quantiles from special: scipy.stats costs
 from .. import units
 from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
+from . import defects
 from . import profile as profiles
 from .loop_model import LoopModel
 from .record_checks import prepared_record
@@ -215,7 +217,8 @@ def _wald(value, stderr, t):
 
 
 def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_noise=None,
-             confidence: float = 0.95, bootstrap: int = 0, seed=None) -> LoopFit:
+             confidence: float = 0.95, bootstrap: int = 0, seed=None, time=None,
+             check_defects: bool = True) -> LoopFit:
     """Fit f, G and the compliance to a measured torque-twist loop (module docstring).
 
     Parameters
@@ -234,6 +237,12 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         ``bootstrap_interval`` to f, G and C.  Costs about ``bootstrap`` fits.
     seed :
         Seed of the bootstrap's random numbers (``numpy.random.default_rng``).
+    time : array_like, optional
+        The time of every sample (s, strictly increasing): a lag between the channels is then estimated in seconds
+        (without it, in samples, assuming uniform sampling).
+    check_defects : bool
+        Test the record for the defects rigs have (``fitting.defects``: torque zero offset, twist drift, lag between
+        the channels) and refit with those found; False: the fit as it comes (for studies of the handling).
 
     Returns
     -------
@@ -258,10 +267,47 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     given_t = None if torque_noise is None else units.positive_si("torque_noise", torque_noise, "torque")
     given_theta = None if twist_noise is None else units.positive_si("twist_noise", twist_noise, "angle")
     record = prepared_record(torque, twist, given_t, given_theta)
-    torque, twist, s_t, s_theta = record.torque, record.twist, record.torque_noise, record.twist_noise
-    reversal_index = record.reversals
+    if time is None:
+        clock = np.arange(np.size(torque), dtype=float)  # uniform sampling assumed: a lag in samples
+    else:
+        clock = _checked_time(time, np.size(torque))
+    clock = clock[record.kept]
+    settings = (a, force, confidence, bootstrap, seed, estimated)
+    fitted = _fit_prepared(record.torque, record.twist, record.reversals, record.torque_noise, record.twist_noise,
+                           list(record.warnings), record.spikes, settings)
+    if not check_defects:
+        return fitted.result
+    return defects.corrected_fit(fitted, clock, record, settings, _fit_prepared, time is not None)
+
+
+def _checked_time(time, n: int) -> np.ndarray:
+    """The time column (s) as floats: as many as the samples, finite and strictly increasing; else ValueError."""
+    clock = units.si_array("time", time, "time")
+    clock = np.asarray(clock, dtype=float)
+    if clock.ndim != 1 or clock.size != n:
+        raise ValueError(f"time must hold one value per sample ({n}), got shape {clock.shape}")
+    if not np.all(np.isfinite(clock)) or not np.all(np.diff(clock) > 0):
+        raise ValueError("time must be finite and strictly increasing")
+    return clock
+
+
+@dataclass
+class Fitted:
+    """A fit with what the defect checks need: the result, the loop model, the parameters (None in stick) and the
+    straight loop's (C, theta_0) with the line's Jacobian."""
+
+    result: LoopFit
+    model: LoopModel
+    p: np.ndarray | None
+    line: object
+
+
+def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, settings, quick: bool = False) -> Fitted:
+    """The fit of a prepared record (``fit_loop``): a ``Fitted`` (with ``quick``: the point estimate and the slip
+    test's verdict only, no result)."""
+    a, force, confidence, bootstrap, seed, estimated = settings
     model = LoopModel(torque, twist, reversal_index, s_t, s_theta)
-    notes = list(record.warnings)
+    record_spikes = spikes
     n = torque.size
     peak = float(np.max(np.abs(torque)))
     noise = {"torque": s_t, "twist": s_theta, "estimated": estimated}
@@ -323,9 +369,11 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     if stick_test < stick_critical:
         stick_critical = critical_value(path_length(model, compliance_0, offset_0, foot_0), 1.0 - confidence)
 
+    if quick:
+        return Fitted(None, model, None if stick_test < stick_critical else p, line)
     if stick_test < stick_critical:
-        return _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common,
-                             notes, record.spikes)
+        return Fitted(_stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence,
+                                    common, notes, record_spikes), model, None, line)
 
     critical = float(special.fdtri(1, dof, confidence))  # F(1, dof) quantile
     t_quantile = math.sqrt(critical)
@@ -350,9 +398,9 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                 jacobian = model.distances(p, jacobian=True)[1]
             scale2 = s_full / dof
             straight = (s_stick - s_full) / scale2
-    return _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
-                        confidence, bootstrap, seed, lower, upper, common, notes, record.spikes,
-                        clipped=clipped is not None)
+    return Fitted(_slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
+                               confidence, bootstrap, seed, lower, upper, common, notes, record_spikes,
+                               clipped=clipped is not None), model, p, line)
 
 
 def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):

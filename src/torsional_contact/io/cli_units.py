@@ -303,7 +303,7 @@ def fit_command(args) -> dict:
     try:
         result = fit_loop(columns["torque"], columns["twist"], radius=args.radius, normal_force=args.normal_force,
                           torque_noise=args.torque_noise, twist_noise=args.twist_noise, bootstrap=args.bootstrap,
-                          seed=args.seed, confidence=args.confidence)
+                          seed=args.seed, time=columns.get("time"), confidence=args.confidence)
     except ValueError as exc:
         raise ValueError(option_named(str(exc), names)) from None
     return fit_outputs(args, result, columns)
