@@ -7,13 +7,15 @@ the fitting code): a = 5 mm, L = 20 mm, G = 80 GPa, f = 0.6, F = 1 kN, noise 0.5
 
 from __future__ import annotations
 
+import json
 import warnings
 
 import numpy as np
 import pytest
 from rig_records import Rig, torque_controlled, twist_controlled
 
-from torsional_contact import fit_loop
+from torsional_contact import fit_loop, models
+from torsional_contact.contact_models.base import ContactModel
 from torsional_contact.fitting import record_checks
 
 RIG = Rig()
@@ -169,3 +171,119 @@ def test_stuck_contact_with_a_lag_never_gets_a_friction_value(lag, seed):
     assert fit.stick_test >= 0.0
     if fit.slip_detected:
         assert any(w.startswith("lag") for w in fit.warnings)
+
+
+class _Toy(ContactModel):
+    """A contact model of the test's own (not in the package): bonded below T* = 1/2 with a linear rotation, slipping
+    up to spinning at T* = 1 with omega_m = 0.3 T* + 0.2 u^3 / (1 - u), u = 2 T* - 1; one elastic body, no shafts."""
+
+    name = "toy-bonded"
+    description = "a bonded toy contact for the fit's tests"
+    bodies = "the toy bodies"
+    slip_onset_torque = 0.5
+    gross_slip_torque = 1.0
+    gross_slip_text = "1"
+    elastic_bodies = 1
+    shaft = False
+
+    def monotonic_points(self, tau):
+        tau = np.asarray(tau, dtype=float)
+        u = np.clip(2.0 * tau - 1.0, 0.0, 1.0)
+        with np.errstate(divide="ignore"):
+            omega = 0.3 * tau + np.where(u < 1.0, 0.2 * u**3 / np.maximum(1.0 - u, 1e-300), np.inf)
+        return np.where(u > 0, 1.0 - u, 1.0), omega, np.zeros_like(tau)
+
+
+@pytest.mark.parametrize("model, amplitude", [("half-space", 1.3), ("toy", 0.85)])
+def test_fit_through_the_contact_model_interface(model, amplitude):
+    toy = _Toy()
+    if model == "toy":
+        models.register(toy, replace=True)
+    try:
+        rig = RIG.with_(model=toy if model == "toy" else model)
+        for seed in (16, 17):
+            time, torque, twist = torque_controlled(rig, amplitude, twist_noise=TWIST_NOISE, seed=seed)
+            time, torque, twist = torque_controlled(rig, amplitude, torque_noise=0.005 * np.ptp(torque),
+                                                    twist_noise=TWIST_NOISE, seed=seed)
+            # 99.9 % intervals: a single record's 95 % interval misses one time in twenty
+            fit = _fit(time, torque, twist, time=time, model=toy.name if model == "toy" else model,
+                       confidence=0.999)
+            assert fit.slip_detected and fit.warnings == ()
+            lo, hi = fit.friction.interval
+            assert lo <= RIG.friction <= hi
+            g_lo, g_hi = fit.shear_modulus.interval
+            assert (g_lo is None or g_lo <= RIG.shear_modulus) and (g_hi is None or RIG.shear_modulus <= g_hi)
+    finally:
+        models.unregister(toy.name)
+
+
+def _running_in(cycles: int, sample_rate: float, seed: int):
+    from torsional_contact.verification.rig_records import RigDefects, rig_record
+
+    record = rig_record(control="twist", amplitude=2.5e-3, cycles=cycles, sample_rate=sample_rate,
+                        defects=RigDefects(friction_end=0.45, running_in_cycles=cycles), rng=seed)
+    fit = _fit(record.time, record.torque, record.twist, time=record.time, per_cycle=True)
+    assert len(fit.cycles) == cycles - 1  # whole cycles from the first turning point on
+    truth = record.truth["friction_per_cycle"]
+    step = abs(truth[1] - truth[0])  # the change over one cycle: its two branches' friction differ by half of it
+    for entry in fit.cycles:
+        lo, hi = entry["friction"]["interval"]
+        f = truth[entry["cycle"] - 1]
+        # the interval meets the range of the friction of the cycle's two branches (one f per cycle is fitted)
+        assert lo - 0.25 * step <= f <= hi + 0.25 * step, (entry, f)
+        assert {"cycle", "friction", "compliance", "regime", "warnings"} <= entry.keys()
+        assert {"value", "stderr", "interval"} <= entry["compliance"].keys()
+
+
+def test_per_cycle_fit_follows_running_in():
+    _running_in(6, 100.0, 18)
+
+
+@pytest.mark.sweep
+def test_per_cycle_fit_follows_twenty_cycles_of_running_in():
+    _running_in(20, 200.0, 19)
+
+
+def test_known_modulus_fits_friction_and_takes_the_shafts_out():
+    for seed in (21, 22):
+        time, torque, twist = torque_controlled(RIG, 1.3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE, seed=seed)
+        fit = _fit(time, torque, twist, time=time, shear_modulus="80 GPa", gauge_length="20 mm", confidence=0.999)
+        lo, hi = fit.friction.interval
+        assert lo <= RIG.friction <= hi and fit.friction.stderr > 0
+        assert fit.shear_modulus.value == RIG.shear_modulus
+        lo, hi = fit.rig_compliance.interval
+        assert lo <= RIG.rig_compliance <= hi
+        # the shafts' L / (G J) is what separates the two compliances
+        shafts = fit.compliance.value - fit.rig_compliance.value
+        assert shafts == pytest.approx(RIG.shaft_compliance, rel=1e-12)
+        data = fit.as_dict()
+        assert {"value", "stderr", "interval"} <= data["rig_compliance"].keys()
+
+
+def test_known_modulus_bad_input():
+    time, torque, twist = torque_controlled(RIG, 1.3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE, seed=23)
+    with pytest.raises(ValueError, match="gauge_length needs shear_modulus"):
+        _fit(time, torque, twist, gauge_length="20 mm")
+    with pytest.raises(ValueError, match="not shafts"):
+        _fit(time, torque, twist, shear_modulus="80 GPa", gauge_length="20 mm", model="half-space")
+    with pytest.raises(ValueError, match="shear_modulus"):
+        _fit(time, torque, twist, shear_modulus="-1 GPa")
+
+
+def test_cli_per_cycle_and_model(tmp_path, capsys):
+    from torsional_contact.io.cli import main
+
+    time, torque, twist = torque_controlled(RIG, 1.3, cycles=3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE,
+                                            seed=24)
+    path = tmp_path / "loop.csv"
+    path.write_text("time [s],torque [N m],twist [rad]\n" + "".join(
+        f"{s:.17g},{t:.17g},{w:.17g}\n" for s, t, w in zip(time, torque, twist, strict=True)))
+    base = ["fit", "--loop", str(path), "--radius", "5 mm", "--normal-force", "1 kN", "--json"]
+    assert main([*base, "--per-cycle", "--shear-modulus", "80 GPa", "--gauge-length", "20 mm"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["cycles"]) == 2 and data["cycles"][0]["cycle"] == 1
+    assert {"cycle", "friction", "compliance", "regime", "warnings"} <= data["cycles"][0].keys()
+    assert "rig_compliance" in data and data["warnings"] == []
+    assert main([*base, "--model", "half-space", "--gauge-length", "20 mm", "--shear-modulus", "80 GPa"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and "--gauge-length does not apply" in err and len(err.strip().splitlines()) == 1

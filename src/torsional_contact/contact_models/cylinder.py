@@ -233,6 +233,13 @@ class Cylinder(ContactModel):
     def monotonic(self, method=None, n_terms=None) -> CylinderMonotonic:
         return _monotonic(self, *resolve(method, n_terms))
 
+    def skeleton_nodes(self):
+        """(T*, omega_m, d omega_m / d T*) on nodes from the slip onset to spinning, exact for cubic Hermite
+        interpolation to 1e-10 (the curves' Chebyshev nodes, the onset expansion): ``fitting.skeleton``."""
+        from ..fitting.skeleton import cylinder_nodes
+
+        return cylinder_nodes()
+
 
 @functools.lru_cache(maxsize=64)
 def _monotonic(contact: Cylinder, method: str, n_terms: int | None) -> CylinderMonotonic:

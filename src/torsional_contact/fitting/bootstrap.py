@@ -106,7 +106,7 @@ def bootstrap_intervals(model: LoopModel, p, scale2: float, count: int, confiden
     for b in range(count):
         torque = true_torque + s_t * rng.standard_normal(true_torque.size)
         twist = true_twist + s_w * rng.standard_normal(true_twist.size)
-        world = LoopModel(torque, twist, model.reversals, model.torque_noise, model.twist_noise)
+        world = LoopModel(torque, twist, model.reversals, model.torque_noise, model.twist_noise, model.contact)
         q = fit(world, p, lower, upper, kappa_max=kappa_max)[0]
         replicates[b] = (q[0], q[1] * q[2], q[2])
     estimates = (p[0], p[1] * p[2], p[2])

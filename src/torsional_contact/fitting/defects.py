@@ -203,7 +203,7 @@ def lag_line(model, clock: np.ndarray):
 
 
 def _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed: bool):
-    """The fit of a loop whose opening a lag explains as well as slip does (``LoopFit``), else None.
+    """The fit of a loop whose opening a lag explains as well as slip does (``loop_fit.Fitted``), else None.
 
     A straight loop lagged in time is an ellipse, which a partial-slip loop imitates within the noise: when the
     straight loop with a lag (``lag_line``) is better than the straight loop by more than ``LM_CRITICAL`` residual
@@ -222,8 +222,9 @@ def _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed: b
     if not (gain > LM_CRITICAL and against < result.stick_critical):
         return None
     torque, twist = corrected_record(record.torque, record.twist, clock, [2], [tau])
-    final = fit_prepared(torque, twist, record.reversals, record.torque_noise, record.twist_noise,
-                         list(record.warnings), record.spikes, settings).result
+    fitted_final = fit_prepared(torque, twist, record.reversals, record.torque_noise, record.twist_noise,
+                                list(record.warnings), record.spikes, settings)
+    final = fitted_final.result
     unit = "s" if timed else "samples"
     note = (f"lag: the loop's opening is a lag of {tau:.3g} {unit} between the channels as well as it is slip (the "
             f"straight loop with that lag is {gain:.1f} residual variances better than without; the slip fit "
@@ -233,7 +234,7 @@ def _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed: b
         note += "; slip is not established and no friction value or modulus is given"
         withheld = Estimate(None, None, (None, None), identified=False)
         final = replace(final, friction=withheld, shear_modulus=withheld, noise_limited=True)
-    return replace(final, warnings=(*final.warnings, note))
+    return replace(fitted_final, result=replace(final, warnings=(*final.warnings, note)))
 
 
 def _virgin_statistic(virgin, steady, start: int) -> float:
@@ -259,7 +260,7 @@ def _widened(estimate: Estimate, ratio: float) -> Estimate:
 
 
 def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
-    """The fit of ``record`` with the defects the score tests find (module docstring): a ``LoopFit``."""
+    """The fit of ``record`` with the defects the score tests find (module docstring): a ``loop_fit.Fitted``."""
     if fitted.p is not None:  # slip claimed: is the loop's opening a lag between the channels instead?
         lagged = _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed)
         if lagged is not None:
@@ -289,7 +290,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         if virgin_lr <= VIRGIN_CRITICAL and not (outside and virgin_lr > VIRGIN_HINT):
             virgin_lr = None
     if not kinds and virgin_lr is None:
-        return fitted.result
+        return fitted
     steady = steady_record is not None and (0 in found or virgin_lr is not None)
     if steady:  # fitted from the first turning point on: no torque offset moves the steady branches
         record = steady_record
@@ -320,7 +321,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
                      f"record is fitted from its first turning point on (sample {start}), on the steady Masing "
                      "branches, which neither a torque zero offset nor the history before the record moves")
     if not kinds:
-        return replace(result, warnings=tuple(notes))
+        return replace(final, result=replace(result, warnings=tuple(notes)))
     for k, size, lm in zip(kinds, sizes, statistics, strict=True):
         name, unit, unit_untimed = KINDS[k]
         notes.append(f"{name}: {size:.3g} {unit if timed else unit_untimed} estimated (score test {lm:.1f} > "
@@ -349,7 +350,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         result = replace(result, friction=_widened(result.friction, float(ratios[0])),
                          shear_modulus=_widened_modulus(result.shear_modulus, y_ratio),
                          compliance=_widened(result.compliance, float(ratios[2])))
-    return replace(result, warnings=tuple(notes))
+    return replace(final, result=replace(result, warnings=tuple(notes)))
 
 
 def _widened_modulus(estimate: Estimate, ratio: float) -> Estimate:

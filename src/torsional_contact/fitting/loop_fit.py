@@ -53,7 +53,7 @@ Did it slip?
 ------------
 A loop whose torques stay below the slip onset is straight (C and theta_0 only).  The
 likelihood-ratio statistic of the straight loop against the full model (with the gross-slip
-plateau 4/3 T_s not below the straight loop's largest torque, ``PLATEAU_FLOOR``: a plateau lower
+plateau 4/3 T_s not below the straight loop's largest torque: a plateau lower
 down would clip the noisy tips of a straight loop) is compared with the critical value that
 Davies' bound gives for the record at hand (``fitting.slip_test``: T_s is not identified under
 stick and kappa >= 0 sits on its bound, so the statistic is not chi-square; the fixed 5.99 of
@@ -119,23 +119,23 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import optimize, special  # quantiles from special: scipy.stats costs 0.5 s more to import
 
-from .. import units
-from ..criteria import GROSS_SLIP_TORQUE
+from .. import models, units
 from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
 from . import defects
 from . import profile as profiles
+from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
 from .record_checks import prepared_record
 from .results import Estimate, LoopFit
 from .samples import checked_loop
 from .slip_test import GRID, critical_value, path_length
 
-__all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX"]
+__all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX", "Fitted"]
 
 #: Largest kappa = k / (C T_s): C holds at least the shaft over the gauge length L, L / (G J), so kappa <= 2 a / L,
 #: and the twist formula needs sections about 2 a or more from the interface (L >= 4 a, kappa <= 0.5); 2 leaves room.
@@ -149,9 +149,6 @@ START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
 START_KAPPAS = (0.02, 0.2, 1.0)
 #: Samples whose slope dT/dtheta is at least this fraction of the elastic 1/C count in ``residual_rms``.
 PLATEAU_SLOPE = 0.5
-#: The slip test's alternative keeps T_s at least this fraction of the straight loop's largest torque (its gross-slip
-#: plateau, 4/3 T_s, not below that torque).
-PLATEAU_FLOOR = 0.75
 #: How far (in noise levels of the twist) the twist at a reversal may lie from the extreme sample.
 REVERSAL_REACH = 6.0
 #: Restarts from a better minimum found by a profile.
@@ -207,8 +204,12 @@ def _stick_equivalent(model: LoopModel, line, peak: float, lower, upper) -> np.n
     torque (every sample in stick), the reversals at their samples' foot points on the line, within the bounds."""
     compliance, offset = (float(v) for v in line)
     foot = _line_foot(model.torque, model.twist, compliance, offset, model.torque_noise, model.twist_noise)
-    p = np.concatenate([[1.05 * max(peak, float(np.max(np.abs(foot - offset))) / compliance), START_KAPPAS[1],
-                         compliance, offset], foot[model.reversals]])
+    largest = max(peak, float(np.max(np.abs(foot - offset))) / compliance)
+    onset, gross = model.contact.slip_onset_torque, model.contact.gross_slip_torque
+    # a contact that slips at any torque is straight only without its twist (kappa at its bound)
+    slip_torque, kappa = (1.05 * largest / onset, START_KAPPAS[1]) if onset > 0 else (1.05 * largest / gross,
+                                                                                       KAPPA_MIN)
+    p = np.concatenate([[slip_torque, kappa, compliance, offset], foot[model.reversals]])
     return np.clip(p, lower, upper)
 
 
@@ -218,7 +219,8 @@ def _wald(value, stderr, t):
 
 def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_noise=None,
              confidence: float = 0.95, bootstrap: int = 0, seed=None, time=None,
-             check_defects: bool = True) -> LoopFit:
+             check_defects: bool = True, model=None, per_cycle: bool = False, shear_modulus=None,
+             gauge_length=None) -> LoopFit:
     """Fit f, G and the compliance to a measured torque-twist loop (module docstring).
 
     Parameters
@@ -240,6 +242,18 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     time : array_like, optional
         The time of every sample (s, strictly increasing): a lag between the channels is then estimated in seconds
         (without it, in samples, assuming uniform sampling).
+    model : str or ContactModel, optional
+        The contact model (``models``; default "cylinder"): its slip onset, gross-slip torque, monotonic rotation
+        and number of elastic bodies shape the loop (``fitting.skeleton``).
+    shear_modulus : optional
+        G (Pa, or a quantity): fixed, so that f and the compliance are fitted (``fitting.known_modulus``).  Without
+        it the fitted G is an effective modulus of the contact (it absorbs the asperities' compliance).
+    gauge_length : optional
+        L (m), with ``shear_modulus`` and a model whose bodies are shafts: the shafts' L / (G J) is taken out of the
+        compliance and ``rig_compliance`` reported.
+    per_cycle : bool
+        Also fit every whole cycle on its own (``fitting.per_cycle``): ``cycles`` in the result, with a progress
+        bar on standard error for ten cycles or more (when it is a terminal).
     check_defects : bool
         Test the record for the defects rigs have (``fitting.defects``: torque zero offset, twist drift, lag between
         the channels) and refit with those found; False: the fit as it comes (for studies of the handling).
@@ -272,12 +286,39 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     else:
         clock = _checked_time(time, np.size(torque))
     clock = clock[record.kept]
-    settings = (a, force, confidence, bootstrap, seed, estimated)
+    contact = models.get(model)
+    modulus = None if shear_modulus is None else units.positive_si("shear_modulus", shear_modulus, "pressure")
+    length = None if gauge_length is None else units.positive_si("gauge_length", gauge_length, "length")
+    if length is not None:
+        if modulus is None:
+            raise ValueError("gauge_length needs shear_modulus (the shafts' L / (G J) is taken out of the compliance)")
+        shaft_compliance(contact, a, modulus, length)  # a model whose bodies are not shafts: ValueError
+    settings = (a, force, confidence, bootstrap, seed, estimated, contact)
     fitted = _fit_prepared(record.torque, record.twist, record.reversals, record.torque_noise, record.twist_noise,
                            list(record.warnings), record.spikes, settings)
-    if not check_defects:
-        return fitted.result
-    return defects.corrected_fit(fitted, clock, record, settings, _fit_prepared, time is not None)
+    if check_defects:
+        fitted = defects.corrected_fit(fitted, clock, record, settings, _fit_prepared, time is not None)
+    result = fitted.result
+    if modulus is not None:
+        reach = REVERSAL_REACH * math.hypot(record.twist_noise, float(result.compliance.value or 0.0)
+                                            * record.torque_noise)
+        result = with_known_modulus(fitted, modulus, length, a, force, confidence, (KAPPA_MIN, KAPPA_MAX), reach)
+    if per_cycle:
+        result = replace(result, cycles=tuple(_cycles(record, settings, clock if time is not None else None)))
+    return result
+
+
+def _cycles(record, settings, clock):
+    """``per_cycle.cycle_fits`` with a progress bar (tqdm, on a terminal) for ten cycles or more."""
+    from .per_cycle import cycle_bounds, cycle_fits
+
+    total = len(cycle_bounds(record.reversals, record.torque.size))
+    if total < 10:
+        return cycle_fits(record, settings, _fit_prepared, clock)
+    from tqdm import tqdm
+
+    with tqdm(total=total, desc="fit per cycle", unit="cycle", disable=None, leave=False) as bar:
+        return cycle_fits(record, settings, _fit_prepared, clock, progress=lambda done, _: bar.update(1))
 
 
 def _checked_time(time, n: int) -> np.ndarray:
@@ -305,8 +346,9 @@ class Fitted:
 def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, settings, quick: bool = False) -> Fitted:
     """The fit of a prepared record (``fit_loop``): a ``Fitted`` (with ``quick``: the point estimate and the slip
     test's verdict only, no result)."""
-    a, force, confidence, bootstrap, seed, estimated = settings
-    model = LoopModel(torque, twist, reversal_index, s_t, s_theta)
+    a, force, confidence, bootstrap, seed, estimated, contact = settings
+    model = LoopModel(torque, twist, reversal_index, s_t, s_theta, contact)
+    gross = contact.gross_slip_torque
     record_spikes = spikes
     n = torque.size
     peak = float(np.max(np.abs(torque)))
@@ -347,7 +389,7 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     # The slip test's alternative: slip that shows as the contact's twist, with the gross-slip plateau not below the
     # straight loop's largest torque (a plateau lower down clips the noisy tips of a loop in stick; fitting the
     # noise there is no evidence of slip, and it is not the smooth departure that Davies' bound counts).
-    floor = PLATEAU_FLOOR * stick_peak
+    floor = stick_peak / gross  # the plateau at the straight loop's largest torque
     s_test = s_full
     if p[0] < floor:
         lower_test = lower.copy()
@@ -421,7 +463,8 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
     foot = model.foot_points(p)
     fitted, slope, turning = model.torque_at(p, foot)[:3]
     tips = float(np.max(np.abs(np.append(turning, fitted))))
-    if GROSS_SLIP_TORQUE * slip_torque - tips > s_t:
+    gross = model.contact.gross_slip_torque
+    if gross * slip_torque - tips > s_t:
         return None  # the plateau is not reached
     on_plateau = slope < PLATEAU_SLOPE / compliance
     level = math.hypot(s_theta, compliance * s_t)
@@ -431,7 +474,7 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
     if spans and max(spans) >= PLATEAU_RESOLVED * level:
         return None  # a plateau the data show
     lower_reference = np.array(lower, dtype=float)
-    lower_reference[0] = (tips + PLATEAU_CLEARANCE * s_t) / GROSS_SLIP_TORQUE
+    lower_reference[0] = (tips + PLATEAU_CLEARANCE * s_t) / gross
     start = np.array(p, dtype=float)
     start[0] = lower_reference[0] * (1 + 1e-6)
     p_ref, s_ref, result = profiles.fit(model, start, lower_reference, upper)
@@ -458,9 +501,12 @@ def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower
     value = {"slip_torque": p[0], "compliance": p[2], "product": y}
     # T_s above the straight loop's largest torque: the straight loop (LR ``straight``); a plateau at a third of the
     # largest torque is far outside any interval; y at kappa = KAPPA_MIN: G infinite for any purpose
-    limits = {("slip_torque", 1): (stick_peak, straight), ("slip_torque", -1): (0.25 * peak, None),
+    onset = model.contact.slip_onset_torque
+    upper_limit = (stick_peak / onset, straight) if onset > 0 else (None, None)  # every larger T_s: the straight loop
+    limits = {("slip_torque", 1): upper_limit, ("slip_torque", -1): (0.25 * peak, None),
               ("product", -1): (KAPPA_MIN * p[2], None), ("product", 1): (None, None),
-              ("compliance", -1): (0.0, None), ("compliance", 1): (None, None)}
+              # C -> 0 (a contact whose own twist is linear in the torque takes it all): no lower end
+              ("compliance", -1): (1e-6 * p[2], None), ("compliance", 1): (None, None)}
     ends = {}
     for kind in ("slip_torque", "product", "compliance"):
         for side in (-1, 1):
@@ -481,8 +527,10 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
     cov = profiles.covariance(line.jac, s_stick / (n - 2))
     se = np.sqrt(np.diag(cov))
     t = float(special.stdtrit(n - 2, 0.5 + confidence / 2))  # Student t quantile
-    bound = 2.0 * peak / (force * a)
-    proven = 1.5 * max(peak - 2.0 * model.torque_noise, 0.0) / (force * a)  # |T*| <= 4/3 whatever G
+    onset, gross = model.contact.slip_onset_torque, model.contact.gross_slip_torque
+    # in stick |T*| <= the slip onset; whatever G, |T*| <= the gross-slip torque
+    bound = 2.0 * peak / (force * a * onset) if onset > 0 else None
+    proven = 2.0 / gross * max(peak - 2.0 * model.torque_noise, 0.0) / (force * a)
     torque, twist = model.torque, model.twist
     return LoopFit(
         friction=Estimate(None, None, (proven, None), identified=False, lower_bound=bound),
@@ -497,10 +545,12 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
         fitted_torque=(twist - offset) / compliance, warnings=tuple(notes), spikes=spikes,
         message=(f"no slip detected (the full model lowers the residual sum by {stick_test:.2f} residual "
                  f"variances, below the critical value {stick_critical:.2f} of the slip test): the loop is "
-                 f"straight, without hysteresis; if the interface stuck throughout, |T*| <= 1 gives f >= "
-                 f"2 max|T| / (F a) = {bound:.4g} (lower_bound); a slip too small to detect is not excluded, and "
-                 f"what the record proves whatever G is |T*| <= 4/3: f >= 1.5 (max|T| - 2 s_T) / (F a) = "
-                 f"{proven:.4g} (interval); G is not identified"),
+                 f"straight, without hysteresis; "
+                 + (f"if the interface stuck throughout, |T*| <= {onset:.4g} gives f >= 2 max|T| / ({onset:.4g} F "
+                    f"a) = {bound:.4g} (lower_bound); a slip too small to detect is not excluded, and "
+                    if bound is not None else "the contact slips at any torque, so its twist is too small to see: ")
+                 + f"what the record proves whatever G is |T*| <= {model.contact.gross_slip_text}: f >= "
+                 f"(2 / {gross:.4g}) (max|T| - 2 s_T) / (F a) = {proven:.4g} (interval); G is not identified"),
         **common)
 
 
@@ -509,7 +559,8 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
     slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
     se = np.sqrt(np.maximum(np.diag(cov)[:4], 0.0))
     to_f = 2.0 / (force * a)
-    c_g = math.pi * a**3 / 4.0  # 1/G = c_g kappa C
+    # kappa = k / (C T_s), k = e f p-bar / G (e elastic bodies), T_s = f F a / 2: 1/G = c_g kappa C
+    c_g = math.pi * a**3 / (2.0 * model.contact.elastic_bodies)
     y = kappa * compliance
     y_gradient = np.array([0.0, compliance, kappa])
     y_se = math.sqrt(max(float(y_gradient @ cov[:3, :3] @ y_gradient), 0.0))
@@ -556,7 +607,8 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
     plateau_free = slope >= PLATEAU_SLOPE / compliance
     twist_residual = (torque - fitted)[plateau_free] / slope[plateau_free]
     reached = float(np.max(np.abs(np.append(turning, fitted[-1])))) / slip_torque
-    regime = "gross-slip" if reached >= GROSS_SLIP_TORQUE * (1 - 1e-6) else "partial-slip" if reached > 1 else "stick"
+    onset, gross = model.contact.slip_onset_torque, model.contact.gross_slip_torque
+    regime = "gross-slip" if reached >= gross * (1 - 1e-6) else "partial-slip" if reached > onset else "stick"
     message = f"slip detected ({regime}, max |T*| = {reached:.4f}; slip test {stick_test:.1f} > {stick_critical:.2f})"
     noise_limited = not (f_identified and g_identified and compliance_estimate.identified)
     if not f_identified:

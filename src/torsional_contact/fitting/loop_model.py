@@ -98,9 +98,14 @@ class LoopModel:
     torque_noise, twist_noise : float
         Noise levels s_T (N m) and s_theta (rad): only their ratio shapes the fit; the overall
         scale is estimated from the distances.
+    contact : ContactModel or str, optional
+        The contact model whose skeleton the branches follow (``models.get``; default the cylinders).
     """
 
-    def __init__(self, torque, twist, reversal_index, torque_noise: float, twist_noise: float):
+    def __init__(self, torque, twist, reversal_index, torque_noise: float, twist_noise: float, contact=None):
+        from .. import models
+
+        self.contact = models.get(contact)
         self.torque = np.asarray(torque, dtype=float)
         self.twist = np.asarray(twist, dtype=float)
         self.reversals = np.asarray(reversal_index, dtype=int)
@@ -133,7 +138,7 @@ class LoopModel:
         key = p.tobytes()
         if self._curve[0] != key:
             slip_torque, kappa, compliance, offset = p[:4].tolist()
-            skeleton = skeleton_of(kappa)
+            skeleton = skeleton_of(kappa, self.contact)
             path = walk(np.concatenate((p[4:], [self.end])) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
             # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until

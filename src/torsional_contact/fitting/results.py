@@ -91,6 +91,12 @@ class LoopFit:
         that are not noise, a failed optimisation, ...): each names the defect; empty when none.
     spikes : int
         Samples removed as spikes before the fit (``fitting.record_checks``).
+    rig_compliance : Estimate or None
+        With the shear modulus and the gauge length given: the rig's own compliance C - L / (G J) (rad / (N m),
+        ``fitting.known_modulus``).
+    cycles : tuple of dict or None
+        With ``per_cycle``: one fit per whole cycle (``fitting.per_cycle``): ``cycle``, ``friction``, ``compliance``
+        ({value, stderr, interval}), ``regime``, ``warnings``, ``start``, ``end`` (sample indices) [, ``time``].
     parameters : ndarray or None
         The fitted parameter vector [T_s (N m), kappa, C (rad/(N m)), theta_0 (rad), U_1..U_M (rad)]
         (``fitting.loop_model``); None in stick.
@@ -123,6 +129,8 @@ class LoopFit:
     parameters: np.ndarray | None = field(default=None, repr=False)
     warnings: tuple = ()
     spikes: int = 0
+    cycles: tuple | None = None
+    rig_compliance: Estimate | None = None
 
     def as_dict(self) -> dict:
         """JSON-ready (non-finite numbers -> None); ``fitted_torque`` is left out."""
@@ -152,7 +160,9 @@ class LoopFit:
             "normal_force": self.normal_force,
             "warnings": list(self.warnings),
             "spikes": self.spikes,
+            **({} if self.cycles is None else {"cycles": [dict(c) for c in self.cycles]}),
+            **({} if self.rig_compliance is None else {"rig_compliance": self.rig_compliance.as_dict()}),
             "units": {"shear_modulus": "Pa", "compliance": "rad/(N m)", "twist_offset": "rad", "residual_rms": "rad",
-                      "torque_residual_rms": "N m", "radius": "m", "normal_force": "N",
+                      "torque_residual_rms": "N m", "radius": "m", "normal_force": "N", "rig_compliance": "rad/(N m)",
                       "noise": {"torque": "N m", "twist": "rad"}},
         }

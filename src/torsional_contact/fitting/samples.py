@@ -16,6 +16,15 @@ Units: torque in N m, twist in rad (SI floats; ``units`` converts at the boundar
   extreme by more than ``threshold`` (8 noise levels, at least 1e-3 of the twist range), so
   that noise near a turning point makes no reversals of its own.  A genuine reversal smaller
   than that is missed: the samples on it are then fitted as part of the branch around it.
+
+  The hysteresis gate of the histories (``histories.gate``) is a filter of the same family (a
+  reversal counts once the signal retreats by a threshold from its running extreme) and they are
+  kept apart on purpose: the gate filters a torque history that starts at the virgin torque 0
+  and decides whether the first extreme is a turning point by the half loop it closes (2 |T_1|
+  against the gate, the memory rules' own criterion), and it returns the gated signal; the fit's
+  filter works on a twist with an arbitrary zero (the twist of the virgin state is a fitted
+  parameter, so no sample is known to be the origin), its threshold is set by the channel's noise,
+  and it returns the indices of the extreme samples, which keep their own residuals in the fit.
 """
 
 from __future__ import annotations

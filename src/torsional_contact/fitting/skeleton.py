@@ -24,6 +24,21 @@ panels are geometric in b near spinning) keep it below 1e-10 in T* for 0 <= kapp
 (``tests/test_fit.py`` checks it against root finding on the curves themselves).  In stick
 (x <= 1) and next to the slip onset (1 - b < 1.7e-6, where kappa omega_m < 3e-18 kappa) T* = x
 exactly; beyond the last node (b = 1e-6, 4/3 - T* = 6e-19) T* = 4/3 to rounding.
+
+Every contact model
+-------------------
+The same inversion serves every model of ``models`` (``Skeleton(kappa, contact)``): its slip
+onset and gross-slip torque (``ContactModel.slip_onset_torque``, ``gross_slip_torque``) and its
+omega_m(T*) (``ContactModel.monotonic().points``) define X(T*).  A model may give its own nodes
+(``skeleton_nodes()``: T*, omega_m, omega_m' from the onset on; the cylinders do, from their curves
+as above); otherwise ``model_nodes`` puts them on a grid in T*, uniform below the onset (where a
+bonded contact's omega_m is linear), graded geometrically toward the onset and toward spinning
+(where omega_m may grow like a logarithm) above it, with omega_m' by central differences of
+step ``SLOPE_STEP`` times the node's distance from the nearer end (a relative error about SLOPE_STEP^2 = 1e-6
+for a logarithm, plus rounding, below 1e-4 at the last node); the last node lies 1e-8 of the range below
+spinning, where T* is the gross-slip torque to that accuracy.
+The twist constant of the rig is the model's: k = elastic_bodies f p-bar / G
+(``ContactModel.contact_twist``).
 """
 
 from __future__ import annotations
@@ -36,7 +51,7 @@ from .. import asymptotics
 from ..criteria import GROSS_SLIP_TORQUE
 from ..curves import monotonic_curves
 
-__all__ = ["Skeleton", "skeleton_nodes", "skeleton_of"]
+__all__ = ["Skeleton", "skeleton_nodes", "skeleton_of", "model_nodes", "cylinder_nodes"]
 
 _NODES_PER_PANEL = 12
 #: Extra nodes per unit width in b (the table's panels above b = 0.26 are up to 0.24 wide).
@@ -49,9 +64,14 @@ _ONSET_NODES = 1e-3
 SEARCH_SPLIT = 1024
 
 
+#: Relative step of the central differences of omega_m (``model_nodes``).
+SLOPE_STEP = 1e-3
+
+
 @functools.lru_cache(maxsize=1)
-def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(T*, omega_m, d omega_m / d T*) on the fixed nodes, T* increasing from 1 to 4/3 (exclusive)."""
+def cylinder_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(T*, omega_m, d omega_m / d T*) of the cylinders on the fixed nodes, T* increasing from 1 to 4/3
+    (exclusive)."""
     curves = monotonic_curves()
     torque, rotation = curves.by_radius["torque"], curves.by_radius["rigid_rotation"]
     edges = torque.edges
@@ -78,18 +98,64 @@ def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return np.concatenate([[1.0], t]), np.concatenate([[0.0], omega]), np.concatenate([[0.0], slope])
 
 
-@functools.lru_cache(maxsize=1)
-def _padded_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """``skeleton_nodes`` with the node x = 0 (T* = omega_m = omega_m' = 0) in front, and the steps of T*."""
-    t, omega, slope = (np.concatenate([[0.0], v]) for v in skeleton_nodes())
+def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The default model's nodes (``cylinder_nodes``)."""
+    return cylinder_nodes()
+
+
+def _generic_nodes(contact) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(T*, omega_m, omega_m') of a model without nodes of its own, from T* = 0 (module docstring)."""
+    onset, gross = float(contact.slip_onset_torque), float(contact.gross_slip_torque)
+    monotonic = contact.monotonic()
+    below = np.linspace(0.0, onset, 9) if onset > 0 else np.zeros(1)
+    span = gross - onset
+    fraction = np.unique(np.concatenate([np.linspace(0.0, 1.0, 241), np.geomspace(1e-9, 0.2, 60),
+                                         1.0 - np.geomspace(1e-8, 0.2, 80)]))
+    t = np.unique(np.concatenate([below, onset + span * fraction[fraction < 1.0]]))
+    omega = np.asarray(monotonic.points(t)[1], dtype=float)
+    # central differences with a step within the node's distance from the onset and from spinning; one-sided at
+    # T* = 0 and at the onset (the bonded side's slope: omega_m is continuous there, its slope may jump)
+    scale = np.maximum(np.minimum(np.abs(t - onset), gross - t), 1e-3 * max(onset, 1e-3))
+    step = np.minimum(SLOPE_STEP * scale, 0.5 * (gross - t))
+    left, right = t - step, t + step
+    first = t <= 0.0
+    left[first] = t[first]
+    if onset > 0:
+        at_onset = t == onset
+        right[at_onset] = t[at_onset]
+    slope = (monotonic.points(right)[1] - monotonic.points(left)[1]) / (right - left)
+    return t, omega, np.asarray(slope, dtype=float)
+
+
+@functools.lru_cache(maxsize=16)
+def model_nodes(contact=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(T*, omega_m, omega_m', steps of T*) on the nodes of ``contact`` (a ``ContactModel``; None: the default), the
+    node T* = 0 first (module docstring)."""
+    from .. import models
+
+    contact = models.get(contact)
+    own = getattr(contact, "skeleton_nodes", None)
+    if own is not None:
+        t, omega, slope = own()
+        if t[0] > 0:  # below the onset the contact sticks (omega_m = 0) or is bonded (omega_m linear in T*)
+            origin_slope = float(slope[0]) if omega[0] != 0 else 0.0
+            t, omega, slope = (np.concatenate([[0.0], t]), np.concatenate([[0.0], omega]),
+                               np.concatenate([[origin_slope], slope]))
+    else:
+        t, omega, slope = _generic_nodes(contact)
     return t, omega, slope, np.diff(t)
 
 
-@functools.lru_cache(maxsize=8)
-def skeleton_of(kappa: float) -> Skeleton:
-    """``Skeleton(kappa)``, the same object for the last few kappa asked for (a fit's starting grid and its
+def _padded_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The default model's ``model_nodes``."""
+    return model_nodes(None)
+
+
+@functools.lru_cache(maxsize=16)
+def skeleton_of(kappa: float, contact=None) -> Skeleton:
+    """``Skeleton(kappa, contact)``, the same object for the last few kappa asked for (a fit's starting grid and its
     constrained fits revisit them)."""
-    return Skeleton(kappa)
+    return Skeleton(kappa, contact)
 
 
 class Skeleton:
@@ -99,14 +165,17 @@ class Skeleton:
     ----------
     kappa : float
         k / (C T_s) >= 0: twist of the contact per unit omega over the rig's linear twist per unit T*.
+    contact : ContactModel or str, optional
+        The contact model (``models.get``; default the cylinders).
     """
 
-    def __init__(self, kappa: float):
+    def __init__(self, kappa: float, contact=None):
         if not kappa >= 0.0:
             raise ValueError(f"kappa must be >= 0, got {kappa!r}")
         self.kappa = float(kappa)
-        # the nodes with the node at x = 0 (T* = 0, slope 1) in front: the cubic on [0, 1] is T* = x exactly (stick)
-        t, omega, slope, t_steps = _padded_nodes()
+        # the nodes with the node at x = 0 (T* = 0) in front: for the cylinders the cubic on [0, 1] is T* = x exactly
+        # (stick)
+        t, omega, slope, t_steps = model_nodes(contact)
         x = t + self.kappa * omega
         x[0] = 0.0
         h = x[1:] - x[:-1]  # np.diff(x)

@@ -43,6 +43,9 @@ GRID = 40
 LOWEST_RATIO = 0.75
 #: Closest approach of the grid to the largest torque, relative (the score vanishes there as (T* - 1)^3).
 CLOSEST = 1e-5
+#: For a model that slips at any torque, the grid of T_s reaches this many times the plateau's (the contact's twist
+#: is then within a few per cent of linear in the torque, a direction of the straight loop).
+UNBONDED_REACH = 30.0
 
 
 def unit_scores(model: LoopModel, compliance: float, offset: float, foot: np.ndarray) -> np.ndarray:
@@ -55,10 +58,15 @@ def unit_scores(model: LoopModel, compliance: float, offset: float, foot: np.nda
     """
     peak = float(np.max(np.abs(foot - offset))) / compliance  # the largest torque of the straight loop
     turning = foot[model.reversals]
-    gap = np.geomspace(CLOSEST, 1.0 - LOWEST_RATIO, GRID)
+    onset, gross = model.contact.slip_onset_torque, model.contact.gross_slip_torque
+    if onset > 0:  # T_s from the plateau (peak / gross) to the slip onset at the largest torque (peak / onset)
+        gap = np.geomspace(CLOSEST, 1.0 - onset / gross, GRID)
+        ratios = (1.0 - gap)[::-1] / onset
+    else:  # slip at any torque: from the plateau up to where the contact's twist is nearly linear in the torque
+        ratios = np.geomspace(1.0 / gross, UNBONDED_REACH / gross, GRID)
     directions = []
     basis = None
-    for ratio in (1.0 - gap)[::-1]:
+    for ratio in ratios:
         p = np.concatenate([[ratio * peak, 0.0, compliance, offset], turning])
         jac = model.torque_at(p, foot, jacobian=True)[3]
         if basis is None:  # the stick model's own directions (C, theta_0): the same at every T_s

@@ -200,6 +200,14 @@ def add_fit_parser(sub, parser_class) -> None:
                    help="add bias-corrected percentile intervals from N parametric-bootstrap refits (20 to 100000; "
                         "costs about N fits; default 0: profile-likelihood intervals only)")
     p.add_argument("--seed", type=int, default=None, help="seed of the bootstrap's random numbers")
+    p.add_argument("--model", choices=models.names(), default=None,
+                   help="the contact model whose loop is fitted (default: cylinder; see 'models')")
+    p.add_argument("--shear-modulus", help="G, e.g. '80 GPa': fixed, so that f and the compliance are fitted "
+                   "(without it the fitted G is an effective modulus of the contact, absorbing asperity compliance)")
+    p.add_argument("--gauge-length", help="L between the twist's cross-sections, e.g. '20 mm' (with --shear-modulus, "
+                   "for shafts): the shafts' L/(G J) is taken out and rig_compliance reported")
+    p.add_argument("--per-cycle", action="store_true",
+                   help="also fit every whole cycle on its own (friction per cycle: running-in, wear)")
     add_fit_input_options(p)
     add_fit_output_options(p)
     p.add_argument("--json", action="store_true", help="print one JSON object (default: a text report)")
@@ -299,11 +307,14 @@ def fit_command(args) -> dict:
                                min_rows=MIN_SAMPLES, encoding=args.encoding, columns=named_columns(args))
     constant_columns_refused(f"--loop {args.loop}", columns)
     names = {"radius": "--radius", "normal_force": "--normal-force", "torque_noise": "--torque-noise",
-             "twist_noise": "--twist-noise", "bootstrap": "--bootstrap"}
+             "twist_noise": "--twist-noise", "bootstrap": "--bootstrap", "shear_modulus": "--shear-modulus",
+             "gauge_length": "--gauge-length"}
     try:
         result = fit_loop(columns["torque"], columns["twist"], radius=args.radius, normal_force=args.normal_force,
                           torque_noise=args.torque_noise, twist_noise=args.twist_noise, bootstrap=args.bootstrap,
-                          seed=args.seed, time=columns.get("time"), confidence=args.confidence)
+                          seed=args.seed, time=columns.get("time"), confidence=args.confidence, model=args.model,
+                          shear_modulus=args.shear_modulus, gauge_length=args.gauge_length,
+                          per_cycle=args.per_cycle)
     except ValueError as exc:
         raise ValueError(option_named(str(exc), names)) from None
     return fit_outputs(args, result, columns)

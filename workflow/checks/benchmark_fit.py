@@ -1,0 +1,99 @@
+"""Benchmark of the loop fit against a baseline commit, in the same run: CPU seconds and peak memory.
+
+    .venv/bin/python workflow/checks/benchmark_fit.py [--baseline COMMIT] [--sizes 1000 100000] [--repeats 5]
+
+Each record (a twist-controlled gross-slip loop of the synthetic rig, ``fitting.synthetic``, 50 cycles
+for the long records, two for the short ones, noise 0.5 % of the torque range and 1e-5 rad; written once
+to a temporary .npy file) is fitted by ``fit_loop`` of this tree and of the baseline (a detached ``git
+worktree`` of COMMIT, default the commit this work started from, removed afterwards), each fit in a
+fresh interpreter whose own CPU time (``time.process_time``, the fit alone) and peak resident memory
+(``ru_maxrss``) are measured; the median of ``--repeats`` runs, interleaved (baseline, current, ...)
+so that the machine's load falls on both alike, and the ratios current / baseline.  Also reported:
+the friction estimate and interval of each, against the truth f = 0.6.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import pathlib
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+CHILD = r"""
+import json, resource, sys, time, warnings
+import numpy as np
+data = np.load(sys.argv[1])
+warnings.simplefilter("ignore")
+from torsional_contact import fit_loop
+start = time.process_time()
+fit = fit_loop(data[0], data[1], radius=0.005, normal_force=1000.0)
+cpu = time.process_time() - start
+rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+print(json.dumps({"cpu": cpu, "rss_mb": rss, "friction": fit.friction.value,
+                  "interval": list(fit.friction.interval)}))
+"""
+
+
+def _record(size: int, path: pathlib.Path) -> None:
+    import numpy as np
+
+    from torsional_contact.fitting.synthetic import Rig, noisy, twist_controlled
+
+    rig = Rig(radius=0.005, normal_force=1000.0, friction=0.6, shear_modulus=80e9, compliance=4e-4, offset=1e-4)
+    cycles = 2 if size < 10_000 else 50
+    torque, twist = twist_controlled(rig, 2.5e-3, cycles=cycles, samples_per_cycle=size // cycles)
+    torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(size))
+    np.save(path, np.array([torque, twist]))
+
+
+def _run(src: pathlib.Path, record: pathlib.Path, timeout: float) -> dict:
+    env = {"PYTHONPATH": str(src), "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"}
+    out = subprocess.run([sys.executable, "-c", CHILD, str(record)], capture_output=True, text=True, env=env,
+                         timeout=timeout, check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--baseline", default="c4591fe", help="the commit whose fit is the baseline")
+    parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 100_000])
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--timeout", type=float, default=1800.0, help="seconds per fit at most")
+    args = parser.parse_args(argv)
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = pathlib.Path(tmp)
+        baseline = tmp / "baseline"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(baseline), args.baseline],
+                       check=True, capture_output=True)
+        try:
+            rows = []
+            for size in args.sizes:
+                record = tmp / f"record_{size}.npy"
+                _record(size, record)
+                runs = {"baseline": [], "current": []}
+                repeats = args.repeats if size < 10_000 else max(1, args.repeats // 5)
+                for _ in range(repeats):
+                    runs["baseline"].append(_run(baseline / "src", record, args.timeout))
+                    runs["current"].append(_run(ROOT / "src", record, args.timeout))
+                row = {"samples": size, "repeats": repeats}
+                for name, results in runs.items():
+                    row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results),
+                                 "peak_rss_mb": statistics.median(r["rss_mb"] for r in results),
+                                 "friction": results[0]["friction"], "interval": results[0]["interval"]}
+                row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
+                row["rss_ratio"] = row["current"]["peak_rss_mb"] / row["baseline"]["peak_rss_mb"]
+                rows.append(row)
+                print(json.dumps(row), flush=True)
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(baseline)], check=False,
+                           capture_output=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
