@@ -149,9 +149,9 @@ def test_npy_column(tmp_path):
 
 
 @pytest.mark.parametrize("text, column, match", [
-    ("time,torque\n0,0\n1,1.2\n", None, r"2 columns \(time, torque\): choose the torque with --column N\|NAME"),
+    ("time,torque\n0,0\n1,1.2\n", None, r"2 columns \('time', 'torque'\): choose the torque with --column N\|NAME"),
     ("time,torque\n0,0\n1,1.2\n", "3", r"--column must be a column number in \[1, 2\].*got '3'"),
-    ("time,torque\n0,0\n1,1.2\n", "load", r"one of the header's names \(time, torque\).*got 'load'"),
+    ("time,torque\n0,0\n1,1.2\n", "load", r"one of the header's names \('time', 'torque'\).*got 'load'"),
     ("0,0\n1,1.2\n", "torque", r"--column 'torque' is a name, but .* has no header line"),
     ("time,torque\n0,0\n1\n", "2", r"line 3: 1 field\(s\), column 2 wanted"),
     ("time,torque\n0,0\n1,x\n", "2", r"line 3: 'x' is not a number"),

@@ -21,6 +21,7 @@ import contextlib
 import errno
 import hashlib
 import json
+import math
 import os
 import shutil
 import signal
@@ -35,6 +36,8 @@ import pytest
 from cli_runner import run_in_process
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+
+from torsional_contact.units import registry
 
 IS_ROOT = os.geteuid() == 0
 PROFILES = {"fast": 40, "ci": 600}
@@ -364,6 +367,54 @@ def test_every_subcommand_exits_0_or_2_with_one_line(argv):
         assert snapshot(root) == before == {}
     if argv[0] in ("errata", "bogus"):
         assert status == 2
+
+
+# --------------------------------------------------------------------------- unit strings and header units, generated
+#: The unit strings that labs type and that were once evaluated as expressions, and spellings that must read.
+UNIT_CASES = ["5,0 mm", "0,5 N m", "2 3 mm", "5 mm; 3", "mm", "(5 mm", "5 mm)", "5 mm^", "5 / 0 mm", "1/0",
+              "1e300 N m", "9**9**9 N m", "9**9**9", "5 mm\x1b[2J", "1e-300 m", "inf mm", "nan N", "5 %", "-5 mm",
+              "5 mm", "1 kN", "0.01 N m", "1e-5 rad", "1.8 Nm", "1.8 N-m", "1.8 N.m", "1.8 N·m", "1 DEG", "1 RAD",
+              "2 mrad", "3 µm", "0.5 in", "1 nm", "1 N m/rad", "x" * 100, ""]
+UNIT_NAMES = ["mm", "m", "N", "kN", "N m", "Nm", "N-m", "N·m", "rad", "mrad", "deg", "DEG", "Deg", "°", "%", "s",
+              "GPa", "nm", "furlong", "1/0", "(N", "N)", "m^", "N m; 3"]
+unit_text = st.one_of(
+    st.sampled_from(UNIT_CASES),
+    st.builds(lambda number, unit, space: f"{number}{space}{unit}", number_text, st.sampled_from(UNIT_NAMES),
+              st.sampled_from(["", " ", "  "])),
+    st.text(max_size=12),
+)
+header_unit = st.one_of(st.sampled_from(UNIT_NAMES), st.text(max_size=8).filter(lambda u: "]" not in u))
+
+
+def small_loop(torque_unit: str, twist_unit: str, separator: str = ",") -> str:
+    """A 30-sample loop in stick (a line with noise-free twist) under a header with the given units."""
+    rows = [f"{0.05 * math.sin(k / 4):.6f}{separator}{1e-3 * math.sin(k / 4) + 1e-6 * k:.9f}" for k in range(30)]
+    return f"torque [{torque_unit}]{separator}twist [{twist_unit}]\n" + "\n".join(rows) + "\n"
+
+
+@PROPERTY
+@given(radius=unit_text, force=unit_text, noise=st.one_of(st.none(), unit_text),
+       torque_unit=header_unit, twist_unit=header_unit, separator=st.sampled_from([",", ";", "\t"]))
+def test_unit_strings_and_header_units_exit_0_or_2_within_a_second(radius, force, noise, torque_unit, twist_unit,
+                                                                    separator):
+    with working_directory() as root:
+        with open("loop.csv", "w", encoding="utf-8", newline="") as handle:
+            handle.write(small_loop(torque_unit, twist_unit, separator))
+        before = snapshot(root)
+        registry()  # built once per process (about half a second): not what the second bounds
+        argv = ["fit", "--loop", "loop.csv", "--radius", radius, "--normal-force", force, "--json"]
+        if noise is not None:
+            argv += ["--torque-noise", noise]
+        start = time.perf_counter()
+        status, out, err = run_in_process(argv)
+        seconds = time.perf_counter() - start
+        check_streams(status, out, err)
+        assert snapshot(root) == before
+    if status == 2:
+        assert seconds < 1.0, (argv, seconds)
+        assert not any(ord(c) < 32 for c in err.rstrip("\n")), repr(err)
+    else:
+        json.loads(out, parse_constant=lambda name: pytest.fail(f"JSON holds {name}"))
 
 
 # --------------------------------------------------------------------------- cases that need real processes

@@ -42,7 +42,8 @@ import sys
 import tempfile
 import threading
 
-__all__ = ["OutputError", "Target", "resolve_output", "open_output", "atomic_path", "write_bytes", "shown_path"]
+__all__ = ["OutputError", "Target", "resolve_output", "distinct_outputs", "open_output", "atomic_path", "write_bytes",
+           "shown_path"]
 
 #: Paths that name an open file descriptor of this process (group 2: the descriptor).
 _DESCRIPTOR_PATH = re.compile(r"^/(dev/fd|proc/(?:self|thread-self|\d+)/fd)/(\d+)$")
@@ -226,6 +227,38 @@ def resolve_output(path, *, label: str = "path", inputs=(), parents: bool = Fals
         reason = "is on a read-only file system" if _read_only(path) else "is not writable"
         raise OutputError(label, path, reason, errno.EACCES)
     return Target(path, path, "stream")
+
+
+def _identity(target: Target):
+    """What makes two file targets the same file: the existing file's (device, inode), else its resolved path."""
+    try:
+        info = os.stat(target.final)
+    except OSError:
+        return ("path", target.final)
+    return ("inode", info.st_dev, info.st_ino) if stat.S_ISREG(info.st_mode) else ("path", target.final)
+
+
+def distinct_outputs(outputs, *, inputs=(), parents: bool = False) -> list[Target]:
+    """``resolve_output`` of every (label, path) of ``outputs`` (None paths skipped), refusing two that name the
+    same file: the same path, a symbolic link to the other, a hard link of it.
+
+    Two outputs to one file would leave only the last written.  FIFOs, devices and descriptors (e.g.
+    /dev/null twice) are written in place and may repeat.  Raises ``OutputError`` naming both options.
+    """
+    targets, seen = [], {}
+    for label, path in outputs:
+        if path is None:
+            continue
+        target = resolve_output(path, label=label, inputs=inputs, parents=parents)
+        if target.kind == "file":
+            key = _identity(target)
+            if key in seen:
+                other_label, other_path = seen[key]
+                raise OutputError(label, path, f"is the same file as {other_label} {shown_path(other_path)}: give two "
+                                  "different files", errno.EEXIST)
+            seen[key] = (label, path)
+        targets.append(target)
+    return targets
 
 
 def _first_non_directory(path: str) -> str:

@@ -23,9 +23,11 @@ twist-controlled rig's gross-slip plateau needs no special case.
 Errors in both variables
 ------------------------
 Both channels are noisy (levels s_T, s_theta: given, or estimated from the second differences by
-``fitting.samples.noise_level``; only their ratio shapes the fit, the overall scale is estimated
-from the residuals).  Each sample's residual is its orthogonal distance from the curve in noise
-units, its true twist eliminated by minimisation (``fitting.loop_model``: the foot point on the
+``fitting.samples.noise_level`` and floored at the channel's resolution and at 1 % of the other channel's level
+through the elastic slope, ``fitting.record_checks``, so that an exact or commanded channel cannot collapse the
+likelihood; spikes are removed first and counted, and an inverted channel is an error); only their ratio shapes
+the fit, the overall scale is estimated from the residuals).  Each sample's residual is its orthogonal distance
+from the curve in noise units, its true twist eliminated by minimisation (``fitting.loop_model``: the foot point on the
 curve; the functional errors-in-variables likelihood, i.e. orthogonal distance regression along
 every branch).  The turning point of each branch is the true state of the reversal's own sample,
 which keeps its two residuals.  The first implementation used the effective-variance residual
@@ -117,6 +119,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 from scipy import optimize, special  # quantiles from special: scipy.stats costs 0.5 s more to import
@@ -124,10 +127,12 @@ from scipy import optimize, special  # quantiles from special: scipy.stats costs
 from .. import units
 from ..criteria import GROSS_SLIP_TORQUE
 from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
+from . import defects
 from . import profile as profiles
 from .loop_model import LoopModel
+from .record_checks import prepared_record
 from .results import Estimate, LoopFit
-from .samples import checked_loop, noise_level, reversal_threshold, turning_points
+from .samples import checked_loop
 from .slip_test import GRID, critical_value, path_length
 
 __all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX"]
@@ -197,12 +202,23 @@ def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:
     return best_p
 
 
+def _stick_equivalent(model: LoopModel, line, peak: float, lower, upper) -> np.ndarray:
+    """The full model's parameters of the straight loop ``line`` (C, theta_0): the slip torque above the largest
+    torque (every sample in stick), the reversals at their samples' foot points on the line, within the bounds."""
+    compliance, offset = (float(v) for v in line)
+    foot = _line_foot(model.torque, model.twist, compliance, offset, model.torque_noise, model.twist_noise)
+    p = np.concatenate([[1.05 * max(peak, float(np.max(np.abs(foot - offset))) / compliance), START_KAPPAS[1],
+                         compliance, offset], foot[model.reversals]])
+    return np.clip(p, lower, upper)
+
+
 def _wald(value, stderr, t):
     return (value - t * stderr, value + t * stderr)
 
 
 def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_noise=None,
-             confidence: float = 0.95, bootstrap: int = 0, seed=None) -> LoopFit:
+             confidence: float = 0.95, bootstrap: int = 0, seed=None, time=None,
+             check_defects: bool = True) -> LoopFit:
     """Fit f, G and the compliance to a measured torque-twist loop (module docstring).
 
     Parameters
@@ -221,6 +237,12 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         ``bootstrap_interval`` to f, G and C.  Costs about ``bootstrap`` fits.
     seed :
         Seed of the bootstrap's random numbers (``numpy.random.default_rng``).
+    time : array_like, optional
+        The time of every sample (s, strictly increasing): a lag between the channels is then estimated in seconds
+        (without it, in samples, assuming uniform sampling).
+    check_defects : bool
+        Test the record for the defects rigs have (``fitting.defects``: torque zero offset, twist drift, lag between
+        the channels) and refit with those found; False: the fit as it comes (for studies of the handling).
 
     Returns
     -------
@@ -242,12 +264,50 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
             bootstrap == 0 or 20 <= bootstrap <= 100_000):
         raise ValueError(f"bootstrap must be 0 (none) or an integer from 20 to 100000, got {bootstrap!r}")
     estimated = torque_noise is None or twist_noise is None
-    torque_range, twist_range = float(np.ptp(torque)), float(np.ptp(twist))
-    s_t = noise_level(torque) if torque_noise is None else units.positive_si("torque_noise", torque_noise, "torque")
-    s_theta = noise_level(twist) if twist_noise is None else units.positive_si("twist_noise", twist_noise, "angle")
-    s_t, s_theta = max(s_t, 1e-12 * torque_range), max(s_theta, 1e-12 * twist_range)  # noise-free records
-    reversal_index = turning_points(twist, reversal_threshold(twist, s_theta))
+    given_t = None if torque_noise is None else units.positive_si("torque_noise", torque_noise, "torque")
+    given_theta = None if twist_noise is None else units.positive_si("twist_noise", twist_noise, "angle")
+    record = prepared_record(torque, twist, given_t, given_theta)
+    if time is None:
+        clock = np.arange(np.size(torque), dtype=float)  # uniform sampling assumed: a lag in samples
+    else:
+        clock = _checked_time(time, np.size(torque))
+    clock = clock[record.kept]
+    settings = (a, force, confidence, bootstrap, seed, estimated)
+    fitted = _fit_prepared(record.torque, record.twist, record.reversals, record.torque_noise, record.twist_noise,
+                           list(record.warnings), record.spikes, settings)
+    if not check_defects:
+        return fitted.result
+    return defects.corrected_fit(fitted, clock, record, settings, _fit_prepared, time is not None)
+
+
+def _checked_time(time, n: int) -> np.ndarray:
+    """The time column (s) as floats: as many as the samples, finite and strictly increasing; else ValueError."""
+    clock = units.si_array("time", time, "time")
+    clock = np.asarray(clock, dtype=float)
+    if clock.ndim != 1 or clock.size != n:
+        raise ValueError(f"time must hold one value per sample ({n}), got shape {clock.shape}")
+    if not np.all(np.isfinite(clock)) or not np.all(np.diff(clock) > 0):
+        raise ValueError("time must be finite and strictly increasing")
+    return clock
+
+
+@dataclass
+class Fitted:
+    """A fit with what the defect checks need: the result, the loop model, the parameters (None in stick) and the
+    straight loop's (C, theta_0) with the line's Jacobian."""
+
+    result: LoopFit
+    model: LoopModel
+    p: np.ndarray | None
+    line: object
+
+
+def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, settings, quick: bool = False) -> Fitted:
+    """The fit of a prepared record (``fit_loop``): a ``Fitted`` (with ``quick``: the point estimate and the slip
+    test's verdict only, no result)."""
+    a, force, confidence, bootstrap, seed, estimated = settings
     model = LoopModel(torque, twist, reversal_index, s_t, s_theta)
+    record_spikes = spikes
     n = torque.size
     peak = float(np.max(np.abs(torque)))
     noise = {"torque": s_t, "twist": s_theta, "estimated": estimated}
@@ -272,6 +332,12 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     upper[4:] = twist[reversal_index] + reach
     dof = n - 4  # N - M distances and 2 M reversal residuals for 4 + M parameters (``loop_model``)
     p, s_full, result = profiles.fit(model, start, lower, upper)
+    # the straight loop is a loop of the full model (a slip torque above the largest torque): the fit from there
+    # can end no worse than the straight loop, so that the slip test's statistic is >= 0 by construction
+    p_line = _stick_equivalent(model, line.x, peak, lower, upper)
+    p_alt, s_alt, result_alt = profiles.fit(model, p_line, lower, upper)
+    if s_alt < s_full:
+        p, s_full, result = p_alt, s_alt, result_alt
     jacobian = result.jac
     scale2 = s_full / dof
     straight = (s_stick - s_full) / scale2  # LR of the straight loop: the profile of T_s above the largest torque
@@ -288,16 +354,26 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         lower_test[0] = floor
         start_test = p.copy()
         start_test[0] = floor * (1 + 1e-6)
-        s_test = min(profiles.fit(model, start_test, lower_test, upper)[1], s_stick)
-    stick_test = (s_stick - s_test) / scale2
+        s_test = profiles.fit(model, start_test, lower_test, upper)[1]
+        if p_line[0] >= floor:  # the straight loop is inside the alternative: start there too
+            s_test = min(s_test, profiles.fit(model, p_line, lower_test, upper)[1])
+    # the straight loop's sum of squares is the fit's from ``p_line`` up to the optimiser's tolerance: a statistic
+    # below zero is that tolerance, or an optimisation that failed (said, never read as a verdict)
+    if s_test > s_stick * (1 + 1e-6) + 1e-9 * scale2:
+        notes.append(f"optimisation: the slip fit ended {(s_test - s_stick) / scale2:.3g} residual variances above the "
+                     "straight loop it started from (a failed optimisation; the slip test is read as 0)")
+    stick_test = max((s_stick - min(s_test, s_stick)) / scale2, 0.0)
     # Davies' bound needs the path of the score only when the statistic is not far above any critical value it can
     # give (the unit score's path over GRID points is at most 2 (GRID - 1) long)
     stick_critical = critical_value(2.0 * (GRID - 1), 1.0 - confidence)
     if stick_test < stick_critical:
         stick_critical = critical_value(path_length(model, compliance_0, offset_0, foot_0), 1.0 - confidence)
 
+    if quick:
+        return Fitted(None, model, None if stick_test < stick_critical else p, line)
     if stick_test < stick_critical:
-        return _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common)
+        return Fitted(_stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence,
+                                    common, notes, record_spikes), model, None, line)
 
     critical = float(special.fdtri(1, dof, confidence))  # F(1, dof) quantile
     t_quantile = math.sqrt(critical)
@@ -322,8 +398,9 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                 jacobian = model.distances(p, jacobian=True)[1]
             scale2 = s_full / dof
             straight = (s_stick - s_full) / scale2
-    return _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
-                        confidence, bootstrap, seed, lower, upper, common, clipped=clipped is not None)
+    return Fitted(_slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
+                               confidence, bootstrap, seed, lower, upper, common, notes, record_spikes,
+                               clipped=clipped is not None), model, p, line)
 
 
 def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
@@ -397,7 +474,8 @@ def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower
     return ends
 
 
-def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common):
+def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common, notes,
+                  spikes):
     n = model.torque.size
     compliance, offset = line.x
     cov = profiles.covariance(line.jac, s_stick / (n - 2))
@@ -416,7 +494,7 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
         torque_residual_rms=float(np.sqrt(np.mean((torque - (twist - offset) / compliance) ** 2))),
         noise_scale=math.sqrt(s_stick / (n - 2)), regime="stick", slip_detected=False, noise_limited=False,
         stick_test=stick_test, stick_critical=stick_critical, interval_method="wald", dof=n - 2,
-        fitted_torque=(twist - offset) / compliance,
+        fitted_torque=(twist - offset) / compliance, warnings=tuple(notes), spikes=spikes,
         message=(f"no slip detected (the full model lowers the residual sum by {stick_test:.2f} residual "
                  f"variances, below the critical value {stick_critical:.2f} of the slip test): the loop is "
                  f"straight, without hysteresis; if the interface stuck throughout, |T*| <= 1 gives f >= "
@@ -427,7 +505,7 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
 
 
 def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
-                 confidence, bootstrap, seed, lower, upper, common, clipped: bool = False):
+                 confidence, bootstrap, seed, lower, upper, common, record_notes, spikes, clipped: bool = False):
     slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
     se = np.sqrt(np.maximum(np.diag(cov)[:4], 0.0))
     to_f = 2.0 / (force * a)
@@ -527,4 +605,5 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
         noise_scale=math.sqrt(scale2), regime=regime, slip_detected=True, stick_test=stick_test,
         stick_critical=stick_critical, noise_limited=noise_limited, interval_method="profile likelihood",
         dof=int(model.torque.size - 4), fitted_torque=fitted, message=message, bootstrap=n_boot,
+        warnings=tuple(record_notes), spikes=spikes,
         parameters=np.array(p, dtype=float), **common)

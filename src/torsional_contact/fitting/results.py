@@ -86,6 +86,11 @@ class LoopFit:
         The model's torque at every measured twist (N m).
     bootstrap : int
         Number of parametric-bootstrap refits behind ``bootstrap_interval`` (0: none).
+    warnings : tuple of str
+        One line per defect of the record found (spikes removed, lag, drift, offset, non-virgin start, residuals
+        that are not noise, a failed optimisation, ...): each names the defect; empty when none.
+    spikes : int
+        Samples removed as spikes before the fit (``fitting.record_checks``).
     parameters : ndarray or None
         The fitted parameter vector [T_s (N m), kappa, C (rad/(N m)), theta_0 (rad), U_1..U_M (rad)]
         (``fitting.loop_model``); None in stick.
@@ -116,6 +121,8 @@ class LoopFit:
     fitted_torque: np.ndarray = field(repr=False)
     bootstrap: int = 0
     parameters: np.ndarray | None = field(default=None, repr=False)
+    warnings: tuple = ()
+    spikes: int = 0
 
     def as_dict(self) -> dict:
         """JSON-ready (non-finite numbers -> None); ``fitted_torque`` is left out."""
@@ -143,6 +150,8 @@ class LoopFit:
             "dof": self.dof,
             "radius": self.radius,
             "normal_force": self.normal_force,
+            "warnings": list(self.warnings),
+            "spikes": self.spikes,
             "units": {"shear_modulus": "Pa", "compliance": "rad/(N m)", "twist_offset": "rad", "residual_rms": "rad",
                       "torque_residual_rms": "N m", "radius": "m", "normal_force": "N",
                       "noise": {"torque": "N m", "twist": "rad"}},

@@ -128,6 +128,11 @@ def _cmd_history(args):
     specimen = cli_units.specimen_from(args)
     if specimen is not None:
         return cli_units.history_si(args, specimen)
+    for option, value in (("--torque-column", args.torque_column), ("--time-column", args.time_column),
+                          ("--encoding", args.encoding)):
+        if value is not None:
+            raise UsageError(f"{option} reads a lab export with units: it needs --signal and the specimen options "
+                             "(for a file of T* values, --column chooses the column)")
     if args.signal is None:
         args.turning_points = [cli_units.plain_number("--turning-points", v) for v in args.turning_points]
         for option, value in (("--output", args.output), ("--states", args.states), ("--gate", args.gate),
@@ -142,16 +147,16 @@ def _cmd_history(args):
                 for state in states]
     if args.radii is not None:
         raise UsageError("--radii applies to --turning-points only (profiles of a few states)")
-    from ..output import resolve_output
+    from ..output import distinct_outputs
+
+    args.gate = cli_units.plain_number("--gate", args.gate)
+    args.bin_width = cli_units.plain_number("--bin-width", args.bin_width)
 
     if args.parents and args.output is None and args.states is None:
         raise UsageError("--parents needs --output or --states (it creates their missing directories)")
-    tables = [(option, path) for option, path in (("--output", args.output), ("--states", args.states))
-              if path is not None]
-    if len(tables) == 2 and os.path.abspath(args.output) == os.path.abspath(args.states):
-        raise UsageError(f"--states and --output name the same file ({args.output}): give two paths")
-    for option, path in tables:  # refuse a bad table path before the analysis, not after it
-        resolve_output(path, label=option, inputs=(("--signal", args.signal),), parents=args.parents)
+    # refuse a bad table path, or two names of one file, before the analysis, not after it
+    distinct_outputs((("--output", args.output), ("--states", args.states)), inputs=(("--signal", args.signal),),
+                     parents=args.parents)
     return analyse_file(args.signal, method=args.method, n_terms=args.n_terms, model=args.model, output=args.output,
                         states=args.states, gate=0.0 if args.gate is None else args.gate, bin_width=args.bin_width,
                         progress=not args.no_progress, full=args.json, column=args.column,
@@ -301,16 +306,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--states", help="with --signal: table of the states at every turning point (.npz, .npy or CSV; "
                    "the JSON lists them only for signals of at most 1000 turning points)")
     p.add_argument("--parents", action="store_true", help="create the missing directories of --output and --states")
-    p.add_argument("--gate", type=real_argument, default=None,
+    p.add_argument("--gate", type=cli_units.number_or_quantity, default=None,
                    help="with --signal: drop reversals smaller than this torque range before the memory rules "
                    "(hysteresis filter; changes the history: see docs/conventions.md; default 0, none; "
                    "with the specimen options in N m)")
-    p.add_argument("--bin-width", type=real_argument, default=None,
+    p.add_argument("--bin-width", type=cli_units.number_or_quantity, default=None,
                    help="with --signal: width in T* of the range and mean bins of the rainflow matrix in the JSON "
                    "(default: exact grouping up to 1000 turning points, else 0.05; with the specimen options in N m)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar on standard error")
     _add_solver_options(p)
     cli_units.add_specimen_options(p)
+    cli_units.add_fit_input_options(p, ("torque", "time"), " (--signal with the specimen options)")
     p.add_argument("--json", action="store_true", help="print JSON: a list of states, or one object for --signal")
     p.set_defaults(handler=_cmd_history)
     p = sub.add_parser("reference", help="high-precision solution: the truncated weak form, or (--method fast) "
@@ -361,15 +367,21 @@ def _quiet_standard_output() -> None:
 
 
 def _print_result(args, result) -> None:
+    if not getattr(args, "json", False) and hasattr(result, "text"):  # a report of its own (fit)
+        print(result.text())
+        sys.stdout.flush()
+        return
     result = _finite_record(result)
     if getattr(args, "json", False):
         print(json.dumps(result, allow_nan=False))
     elif isinstance(result, list):  # one record per line
         for record in result:
             print(json.dumps(record, allow_nan=False))
-    else:
+    else:  # one "key: value" line each; nested values as JSON, never a Python repr
         for key, value in result.items():
-            print(f"{key}: {value}")
+            shown = json.dumps(value, allow_nan=False, ensure_ascii=False) if isinstance(value, (dict, list)) or \
+                value is None or isinstance(value, bool) else value
+            print(f"{key}: {shown}")
     sys.stdout.flush()
 
 
@@ -414,8 +426,7 @@ def main(argv=None) -> int:
             extra = extras.extra_for(exc.name or "")
             if extra is None:
                 raise
-            return _error(f"{args.command} needs the optional package {exc.name}, not installed: "
-                          f"{extras.install_hint(extra)}")
+            return _error(extras.missing_message(args.command, [exc.name], extra))
         try:
             _print_result(args, result)
         except OSError as exc:

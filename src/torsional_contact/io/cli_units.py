@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 
 import numpy as np
 
@@ -85,11 +86,17 @@ def specimen_from(args):
     try:
         return Specimen(**values, gauge_length=args.gauge_length, model=getattr(args, "model", None))
     except ValueError as exc:  # name the option, not the keyword
-        text = str(exc)
-        for dest, flag in (*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length")):
-            if text.startswith(dest + " "):
-                text = flag + text[len(dest):]
-        raise ValueError(text) from None
+        raise ValueError(option_named(str(exc), dict((*SPECIMEN_OPTIONS, ("gauge_length", "--gauge-length"))))) \
+            from None
+
+
+def option_named(text: str, names: dict) -> str:
+    """A message of the API (starting with a keyword, "radius must ..." or "radius: ...") with the keyword replaced
+    by its command-line option."""
+    for key, flag in names.items():
+        if text.startswith((key + " ", key + ":")):
+            return flag + text[len(key):]
+    return text
 
 
 def solve_si(args, specimen) -> dict:
@@ -153,7 +160,8 @@ def history_si(args, specimen):
     from .lab_files import read_lab_columns
 
     label = f"--signal {args.signal}"
-    columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label)
+    columns = read_lab_columns(args.signal, ["torque"], ["time"], label=label, encoding=args.encoding,
+                               columns=named_columns(args, ("torque", "time")))
     contact = specimen.contact if args.model is None else models.get(args.model)
     gross = contact.gross_slip_torque
     torque_star = columns["torque"] / specimen.torque_scale
@@ -185,34 +193,129 @@ def add_fit_parser(sub, parser_class) -> None:
     p.add_argument("--radius", required=True, help="cylinder radius a, e.g. '5 mm' (a number: m)")
     p.add_argument("--normal-force", required=True, help="normal force F, e.g. '1 kN' (a number: N)")
     p.add_argument("--torque-noise", help="standard deviation of the torque noise, e.g. '0.01 N m' (default: "
-                   "estimated)")
-    p.add_argument("--twist-noise", help="standard deviation of the twist noise, e.g. '1e-5 rad' (default: estimated)")
+                   "estimated, floored at the channel's resolution); state it for a commanded (exact) channel")
+    p.add_argument("--twist-noise", help="standard deviation of the twist noise, e.g. '1e-5 rad' (default: estimated, "
+                   "floored at the channel's resolution)")
     p.add_argument("--bootstrap", type=int, default=0, metavar="N",
                    help="add bias-corrected percentile intervals from N parametric-bootstrap refits (20 to 100000; "
                         "costs about N fits; default 0: profile-likelihood intervals only)")
     p.add_argument("--seed", type=int, default=None, help="seed of the bootstrap's random numbers")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_fit_input_options(p)
+    add_fit_output_options(p)
+    p.add_argument("--json", action="store_true", help="print one JSON object (default: a text report)")
     p.set_defaults(handler=fit_command)
+
+
+def add_fit_input_options(p, roles=("torque", "twist", "time"), condition: str = "") -> None:
+    """How ``fit`` (and ``history --signal`` with the specimen options: ``roles`` torque and time, ``condition``
+    saying so) reads the lab export: the columns by name and the encoding (``io.lab_files``)."""
+    group = p.add_argument_group("reading the export (separator, decimal mark and metadata lines are found)"
+                                 + condition)
+    examples = {"torque": "'Drehmoment'", "twist": "'Winkel'", "time": "'Zeit'"}
+    for role in roles:
+        example = examples[role]
+        group.add_argument(f"--{role}-column", metavar="NAME",
+                           help=f"the header name of the {role} column (e.g. {example}), when it is not "
+                           f"'{role}' or a synonym of it")
+    group.add_argument("--encoding", help="the file's text encoding (default: UTF-8, else Windows-1252)")
+
+
+def add_fit_output_options(p) -> None:
+    """What ``fit`` writes beside its report: the plot and the residual table (``io.fit_report``)."""
+    group = p.add_argument_group("outputs")
+    group.add_argument("--confidence", type=float, default=0.95,
+                       help="level of the intervals, in (0, 1) (default 0.95); the slip test's level is 1 - it")
+    group.add_argument("--plot", metavar="FILE", help="the loop with the fitted model and the normalised residuals "
+                       "(.png, .pdf or .svg; needs matplotlib, the plots extra)")
+    group.add_argument("--residuals", metavar="FILE", help="every sample with the fitted torque, its residual and the "
+                       "normalised residual (CSV; .npz or .npy: binary)")
+    group.add_argument("--parents", action="store_true", help="create the missing directories of --plot and "
+                       "--residuals")
+
+
+def named_columns(args, roles=("torque", "twist", "time")) -> dict:
+    """role -> header name given with --ROLE-column (``read_lab_columns``'s ``columns``)."""
+    return {role: getattr(args, f"{role}_column") for role in roles if getattr(args, f"{role}_column", None)
+            is not None}
+
+
+def fit_outputs_checked(args) -> None:
+    """--confidence, --plot and --residuals checked before the fit: a bad one costs no fit."""
+    import os
+
+    from .. import extras
+    from ..output import distinct_outputs
+    from .fit_report import PLOT_FORMATS
+
+    if not (math.isfinite(args.confidence) and 0 < args.confidence < 1):
+        raise ValueError(f"--confidence must lie in (0, 1) (e.g. 0.95), got {args.confidence!r}")
+    if args.plot is not None:
+        if os.path.splitext(args.plot)[1].lower() not in PLOT_FORMATS:
+            raise ValueError(f"--plot {args.plot}: name a {', '.join(PLOT_FORMATS)} file (the format is the "
+                             "extension)")
+        extras.require("plots", "fit --plot")
+    if args.parents and args.plot is None and args.residuals is None:
+        raise ValueError("--parents needs --plot or --residuals (it creates their missing directories)")
+    distinct_outputs((("--plot", args.plot), ("--residuals", args.residuals)), inputs=(("--loop", args.loop),),
+                     parents=args.parents)
+
+
+def fit_outputs(args, result, columns) -> dict:
+    """The fit's record with the input's provenance, after writing --residuals and --plot."""
+    from .. import units
+    from .fit_report import FitRecord, fit_provenance, plot_fit, residual_columns, write_residuals
+
+    record = FitRecord(result.as_dict())
+    record["input"] = columns["report"]
+    record["provenance"] = fit_provenance(columns["report"])
+    outputs = {}
+    if args.residuals is not None or args.plot is not None:
+        noise = [None if value is None else units.positive_si(key, value, kind) for key, value, kind in
+                 (("torque_noise", args.torque_noise, "torque"), ("twist_noise", args.twist_noise, "angle"))]
+        table = residual_columns(result, columns, *noise)
+        if args.residuals is not None:
+            write_residuals(args.residuals, table, inputs=(("--loop", args.loop),), parents=args.parents)
+            outputs["--residuals"] = args.residuals
+        if args.plot is not None:
+            plot_fit(args.plot, table, record, title=f"{os.path.basename(args.loop)}: f = "
+                     f"{_shown_value(record['friction'].get('value'))}, regime {record['regime']}",
+                     inputs=(("--loop", args.loop),), parents=args.parents)
+            outputs["--plot"] = args.plot
+    if outputs:
+        record["outputs"] = outputs
+    return record
+
+
+def _shown_value(value) -> str:
+    return "not identified" if value is None else f"{value:.4g}"
 
 
 def fit_command(args) -> dict:
     from ..fitting import MIN_SAMPLES, fit_loop
     from .lab_files import read_lab_columns
 
-    if (args.torque_noise is None) != (args.twist_noise is None):
-        raise ValueError("give both --torque-noise and --twist-noise, or neither (then both are estimated)")
+    fit_outputs_checked(args)
     columns = read_lab_columns(args.loop, ["torque", "twist"], ["time"], label=f"--loop {args.loop}",
-                               min_rows=MIN_SAMPLES)
+                               min_rows=MIN_SAMPLES, encoding=args.encoding, columns=named_columns(args))
+    constant_columns_refused(f"--loop {args.loop}", columns)
     names = {"radius": "--radius", "normal_force": "--normal-force", "torque_noise": "--torque-noise",
              "twist_noise": "--twist-noise", "bootstrap": "--bootstrap"}
     try:
         result = fit_loop(columns["torque"], columns["twist"], radius=args.radius, normal_force=args.normal_force,
                           torque_noise=args.torque_noise, twist_noise=args.twist_noise, bootstrap=args.bootstrap,
-                          seed=args.seed)
+                          seed=args.seed, time=columns.get("time"), confidence=args.confidence)
     except ValueError as exc:
-        text = str(exc)
-        for key, flag in names.items():
-            if text.startswith(key + " "):
-                text = flag + text[len(key):]
-        raise ValueError(text) from None
-    return result.as_dict()
+        raise ValueError(option_named(str(exc), names)) from None
+    return fit_outputs(args, result, columns)
+
+
+def constant_columns_refused(label: str, columns: dict) -> None:
+    """A torque or twist column that never changes is no loop: ValueError naming the file, the column and its value."""
+    from .. import units
+
+    for role, kind in (("torque", "torque"), ("twist", "angle")):
+        values = columns[role]
+        if values.size and np.ptp(values) == 0:
+            header = columns["report"]["columns"][role]["header"]
+            raise ValueError(f"{label}: the {role} column {units.shown_text(header, 40)} is constant "
+                             f"({units.shown(float(values[0]), kind)} in every row): a loop needs a varying {role}")

@@ -26,6 +26,7 @@ import os
 import numpy as np
 
 from .. import models, validation
+from ..units import shown_text
 
 __all__ = ["read_signal", "format_columns", "write_sample_table", "table_format", "write_table", "read_table"]
 
@@ -57,7 +58,7 @@ def _column_number(label: str, column, count: int, names: list[str] | None) -> i
     if column is None:
         if count == 1:
             return 0
-        listed = ", ".join(names) if names else f"1 to {count}"
+        listed = ", ".join(shown_text(name, 40) for name in names) if names else f"1 to {count}"
         raise ValueError(f"{label}: {count} columns ({listed}): choose the torque with --column N|NAME "
                          "(column= in Python)")
     text = str(column).strip()
@@ -68,11 +69,11 @@ def _column_number(label: str, column, count: int, names: list[str] | None) -> i
                              f"for {label}, got {column!r}")
         return number - 1
     if names is None:
-        raise ValueError(f"--column {text!r} is a name, but {label} has no header line (give a number in "
+        raise ValueError(f"--column {shown_text(text)} is a name, but {label} has no header line (give a number in "
                          f"[1, {count}])")
     if text not in names:
         raise ValueError(f"--column must be a column number in [1, {count}] or one of the header's names "
-                         f"({', '.join(names)}) for {label}, got {text!r}")
+                         f"({', '.join(shown_text(name, 40) for name in names)}) for {label}, got {shown_text(text)}")
     return names.index(text)
 
 
@@ -107,11 +108,18 @@ def _is_number(field: bytes) -> bool:
 
 
 def _read_text(label: str, path: str, column=None, model=None) -> np.ndarray:
+    from .text_tables import _binary_kind
+
     try:
         with open(path, "rb") as handle:
-            lines = handle.read().split(b"\n")
+            data = handle.read()
     except OSError as exc:
         raise ValueError(f"{label}: cannot read ({exc.strerror})") from None
+    kind = _binary_kind(data)
+    if kind is not None:
+        raise ValueError(f"{label}: {kind}, not a text file of T* samples (a .npy array is read by its extension; "
+                         f"{_EXPECTED})")
+    lines = data.removeprefix(b"\xef\xbb\xbf").split(b"\n")  # a UTF-8 byte-order mark is no part of a sample
     if lines and not lines[-1].strip():
         lines.pop()
     if column is None:
@@ -136,6 +144,8 @@ def _read_table(label: str, lines: list[bytes], column, model=None) -> np.ndarra
     if not all(_is_number(f) for f in fields):
         names = [f.decode("utf-8", errors="replace") for f in fields]
         content = content[1:]
+        if not content:
+            raise ValueError(f"{label}: a header line and no samples ({_EXPECTED})")
     j = _column_number(label, column, len(fields), names)
     body = [lines[n] for n in content]
     try:  # numpy's parser: fast; its message is replaced by ours, naming the line, below

@@ -94,19 +94,28 @@ import numpy as np
 from numpy.polynomial import legendre
 from scipy import special
 from scipy.sparse.linalg import splu
-from skfem import (
-    Basis,
-    BilinearForm,
-    ElementTriP1,
-    ElementTriP2,
-    ElementTriP3,
-    ElementTriP4,
-    FacetBasis,
-    Functional,
-    LinearForm,
-    MeshTri,
-)
-from skfem.helpers import dot, grad
+
+try:
+    from skfem import (
+        Basis,
+        BilinearForm,
+        ElementTriP1,
+        ElementTriP2,
+        ElementTriP3,
+        ElementTriP4,
+        FacetBasis,
+        Functional,
+        LinearForm,
+        MeshTri,
+    )
+    from skfem.helpers import dot, grad
+except ModuleNotFoundError as _missing:  # without the fem extra: say which package installs it, not a bare import error
+    if (_missing.name or "").split(".")[0] != "skfem":
+        raise
+    from ..extras import MissingExtraError, missing_message
+
+    raise MissingExtraError(missing_message("the finite-element check (verification.finite_element)", ["skfem"],
+                                            "fem")) from None
 
 from ..diagnostics import AccuracyWarning, TruncationWarning
 

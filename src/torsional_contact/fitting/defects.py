@@ -1,0 +1,245 @@
+r"""The defects every rig has, tested for and fitted: a torque zero offset, a twist drift, a lag between channels.
+
+Units: torque N m, twist rad, time s (or samples, when the record has no time column).
+
+What each defect does to the record (measured = true + effect):
+
+=================  =======================================  ====================================
+defect             effect                                   correction of the record
+=================  =======================================  ====================================
+torque offset dT   T_i + dT                                 T_i - dT
+twist drift r      theta_i + r (t_i - t_mid)                theta_i - r (t_i - t_mid)
+lag tau            theta(t_i - tau) ~ theta_i - tau theta'  theta at t_i + tau (interpolated)
+=================  =======================================  ====================================
+
+(the twist's own zero is a parameter of every fit, theta_0; a mean torque is physics, not a defect).
+
+Score tests
+-----------
+A defect moves the record by a known direction a_i (torque), b_i (twist) per unit of its size.
+The fit's residual vector r (noise units, ``loop_model.LoopModel.distances``) then moves by
+Z = dr/d(data) . (a, b): for a sample's orthogonal distance d_i (envelope theorem, the foot
+point fixed) dd_i/dT_i = 1/w_i and dd_i/dtheta_i = -g'_i / w_i, w_i = sqrt(s_T^2 + g'^2 s_theta^2);
+for a reversal's two residuals 1/s_T and 1/s_theta; for the straight loop's residual
+(T - (theta - theta_0)/C)/w: 1/w and -1/(C w).  With Z_perp the part of Z outside the span
+of the fit's Jacobian J, the score (Lagrange multiplier) statistic
+
+    LM = (Z_perp . r)^2 / (s^2 |Z_perp|^2),     s^2 = S / dof,
+
+is chi-square with one degree of freedom when the defect is absent (Rao's score test; only the
+fit at hand is needed).  Defects enter one at a time, the largest LM first, while it exceeds
+``LM_CRITICAL`` (the chi-square quantile at ``LM_LEVEL``, small because three are tested on every
+record and a false alarm costs a refit), each tested against the fit's columns and those of the
+defects already in.
+
+The fit with the defects
+------------------------
+The defects found are estimated jointly with the fit by Gauss-Newton steps on their sizes
+(each the least-squares step delta = (Z_perp^T Z_perp)^-1 Z_perp^T r with the fit's parameters
+projected out, the record corrected and refitted from there; ``STEPS`` at most, stopping when
+a step changes the residual sum by less than ``STEP_GAIN`` residual variances), and the record
+corrected by them is fitted as any other, the slip test included: a stuck contact whose twist
+lags the torque is a straight loop once the lag is taken out.  The intervals of that fit hold
+the defects at their estimates; each is widened by the ratio of the Wald standard errors with
+and without the defects' columns (sqrt of the diagonal of s^2 ([J Z]^T [J Z])^+ over that of
+s^2 (J^T J)^+), the first-order cost of not knowing them.  Each defect found is one line of
+``warnings``: its name, its estimate and its score statistic.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from scipy import special
+
+from .profile import covariance
+from .results import Estimate
+
+__all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "score_statistics",
+           "corrected_record", "corrected_fit"]
+
+#: The defects, in the order of their columns: (name, unit of the size, unit without a time column).
+KINDS = (("torque offset", "N m", "N m"), ("twist drift", "rad/s", "rad per sample"), ("lag", "s", "samples"))
+#: Level of each score test, and its critical value (chi-square, one degree of freedom).
+LM_LEVEL = 1e-4
+LM_CRITICAL = float(special.chdtri(1, LM_LEVEL))
+#: Gauss-Newton steps at most on the defects' sizes, and the gain (residual variances) below which they stop.
+STEPS = 4
+STEP_GAIN = 0.1
+
+
+def data_derivatives(fitted) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(residual r, Jacobian J, dr/dT_i, dr/dtheta_i, sample index of each row) of a ``loop_fit.Fitted``."""
+    model = fitted.model
+    s_t, s_w = model.torque_noise, model.twist_noise
+    if fitted.p is None:  # the straight loop
+        compliance, offset = (float(v) for v in fitted.line.x)
+        w = math.sqrt(s_t**2 + (s_w / compliance) ** 2)
+        r = (model.torque - (model.twist - offset) / compliance) / w
+        rows = np.arange(model.torque.size)
+        return r, np.asarray(fitted.line.jac), np.full(r.size, 1.0 / w), np.full(r.size, -1.0 / (compliance * w)), rows
+    r, jac = model.distances(fitted.p, jacobian=True)
+    slope = model._project(fitted.p)[2]
+    w = np.sqrt(s_t**2 + (slope * s_w) ** 2)
+    free = model._free_index
+    m = model.reversals.size
+    d_torque = np.concatenate([1.0 / w[free], np.full(m, 1.0 / s_t), np.zeros(m)])
+    d_twist = np.concatenate([-slope[free] / w[free], np.zeros(m), np.full(m, 1.0 / s_w)])
+    rows = np.concatenate([free, model.reversals, model.reversals])
+    return np.asarray(r), np.asarray(jac), d_torque, d_twist, rows
+
+
+def defect_directions(twist: np.ndarray, clock: np.ndarray) -> np.ndarray:
+    """(3, N): per unit size of each defect (``KINDS``), the move of the record, torque rows first then twist:
+    returned as an array (kind, channel, sample)."""
+    n = twist.size
+    out = np.zeros((len(KINDS), 2, n))
+    out[0, 0] = 1.0
+    out[1, 1] = clock - 0.5 * (clock[0] + clock[-1])
+    # theta'(t) from a running mean of five samples (the noise's derivative would dominate the raw differences)
+    kernel = np.ones(5) / 5.0
+    smooth = np.convolve(np.pad(twist, 2, mode="edge"), kernel, mode="valid")
+    out[2, 1] = -np.gradient(smooth, clock)
+    return out
+
+
+def _perp(q: np.ndarray, z: np.ndarray) -> np.ndarray:
+    return z - q @ (q.T @ z)
+
+
+def _basis(jac: np.ndarray) -> np.ndarray:
+    u, s, _ = np.linalg.svd(jac, full_matrices=False)
+    keep = s > s[0] * 1e-10 * math.sqrt(jac.shape[0]) if s.size else s > 0
+    return u[:, keep]
+
+
+def score_statistics(fitted, clock: np.ndarray):
+    """(selected kinds in order of entry, their LM statistics, the columns Z (rows, kinds), r, J, dof, s^2)."""
+    r, jac, d_torque, d_twist, rows = data_derivatives(fitted)
+    model = fitted.model
+    directions = defect_directions(model.twist, clock)
+    z = np.stack([d_torque * directions[k, 0, rows] + d_twist * directions[k, 1, rows] for k in range(len(KINDS))],
+                 axis=1)
+    dof = max(r.size - jac.shape[1], 1)
+    scale2 = float(r @ r) / dof
+    basis = _basis(jac)
+    chosen, statistics = [], []
+    while len(chosen) < len(KINDS):
+        best, best_lm = None, 0.0
+        for k in range(len(KINDS)):
+            if k in chosen:
+                continue
+            zk = _perp(basis, z[:, k])
+            norm2 = float(zk @ zk)
+            if norm2 <= 1e-24 * max(float(z[:, k] @ z[:, k]), 1e-300):
+                continue
+            lm = float(zk @ r) ** 2 / (scale2 * norm2)
+            if lm > best_lm:
+                best, best_lm = k, lm
+        if best is None or best_lm < LM_CRITICAL:
+            break
+        chosen.append(best)
+        statistics.append(best_lm)
+        zk = _perp(basis, z[:, best])
+        basis = np.column_stack([basis, zk / math.sqrt(float(zk @ zk))])
+    return chosen, statistics, z, r, jac, dof, scale2
+
+
+def corrected_record(torque, twist, clock, kinds, sizes):
+    """The record with the defects ``kinds`` of sizes ``sizes`` taken out (module docstring's table)."""
+    torque, twist = np.array(torque, dtype=float), np.array(twist, dtype=float)
+    for k, size in zip(kinds, sizes, strict=True):
+        if k == 0:
+            torque = torque - size
+        elif k == 1:
+            twist = twist - size * (clock - 0.5 * (clock[0] + clock[-1]))
+        else:
+            twist = np.interp(clock + size, clock, twist)
+    return torque, twist
+
+
+def _step(fitted, clock, kinds):
+    """The Gauss-Newton step on the sizes of ``kinds`` with the fit's parameters projected out, and its gain."""
+    r, jac, d_torque, d_twist, rows = data_derivatives(fitted)
+    directions = defect_directions(fitted.model.twist, clock)
+    z = np.stack([d_torque * directions[k, 0, rows] + d_twist * directions[k, 1, rows] for k in kinds], axis=1)
+    zp = _perp(_basis(jac), z)
+    step, *_ = np.linalg.lstsq(zp, r, rcond=None)
+    dof = max(r.size - jac.shape[1] - len(kinds), 1)
+    gain = float(r @ (zp @ step)) / (float(r @ r) / dof)
+    return step, gain, r, jac, z
+
+
+def _widened(estimate: Estimate, ratio: float) -> Estimate:
+    if estimate.value is None or not ratio > 1.0:
+        return estimate
+    lo, hi = estimate.interval
+    v = estimate.value
+    lo = None if lo is None else v - ratio * (v - lo)
+    hi = None if hi is None else v + ratio * (hi - v)
+    return replace(estimate, stderr=None if estimate.stderr is None else estimate.stderr * ratio, interval=(lo, hi))
+
+
+def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
+    """The fit of ``record`` with the defects the score tests find (module docstring): a ``LoopFit``."""
+    kinds, statistics = score_statistics(fitted, clock)[:2]
+    if not kinds:
+        return fitted.result
+    sizes = np.zeros(len(kinds))
+    current = fitted
+    for _ in range(STEPS):
+        step, gain = _step(current, clock, kinds)[:2]
+        sizes = sizes + step
+        torque, twist = corrected_record(record.torque, record.twist, clock, kinds, sizes)
+        current = fit_prepared(torque, twist, record.reversals, record.torque_noise, record.twist_noise,
+                               list(record.warnings), record.spikes, settings, quick=True)
+        if abs(gain) < STEP_GAIN:
+            break
+    torque, twist = corrected_record(record.torque, record.twist, clock, kinds, sizes)
+    final = fit_prepared(torque, twist, record.reversals, record.torque_noise, record.twist_noise,
+                         list(record.warnings), record.spikes, settings)
+    result = final.result
+    notes = list(result.warnings)
+    for k, size, lm in zip(kinds, sizes, statistics, strict=True):
+        name, unit, unit_untimed = KINDS[k]
+        notes.append(f"{name}: {size:.3g} {unit if timed else unit_untimed} estimated (score test {lm:.1f} > "
+                     f"{LM_CRITICAL:.1f}); the record is corrected for it and the intervals widened for its "
+                     "uncertainty")
+    # the intervals' widening: Wald standard errors with and without the defects' columns
+    r, jac, d_torque, d_twist, rows = data_derivatives(final)
+    directions = defect_directions(final.model.twist, clock)
+    z = np.stack([d_torque * directions[k, 0, rows] + d_twist * directions[k, 1, rows] for k in kinds], axis=1)
+    dof = max(r.size - jac.shape[1] - len(kinds), 1)
+    scale2 = float(r @ r) / dof
+    with np.errstate(invalid="ignore", divide="ignore"):
+        core = np.diag(covariance(jac, scale2))
+        joint = np.diag(covariance(np.column_stack([jac, z]), scale2))[:jac.shape[1]]
+        ratios = np.sqrt(np.where(core > 0, joint / core, 1.0))
+    if final.p is None:  # a straight loop: C is the line's first parameter
+        result = replace(result, compliance=_widened(result.compliance, float(ratios[0])))
+    else:
+        p = final.p
+        y_gradient = np.zeros(jac.shape[1])
+        y_gradient[1], y_gradient[2] = p[2], p[1]
+        cov_core = covariance(jac, scale2)
+        cov_joint = covariance(np.column_stack([jac, z]), scale2)[:jac.shape[1], :jac.shape[1]]
+        y_core, y_joint = float(y_gradient @ cov_core @ y_gradient), float(y_gradient @ cov_joint @ y_gradient)
+        y_ratio = math.sqrt(y_joint / y_core) if y_core > 0 else 1.0
+        result = replace(result, friction=_widened(result.friction, float(ratios[0])),
+                         shear_modulus=_widened_modulus(result.shear_modulus, y_ratio),
+                         compliance=_widened(result.compliance, float(ratios[2])))
+    return replace(result, warnings=tuple(notes))
+
+
+def _widened_modulus(estimate: Estimate, ratio: float) -> Estimate:
+    """G's interval widened by ``ratio`` in 1/G (linear in the fitted y = kappa C)."""
+    if estimate.value is None or not ratio > 1.0:
+        return estimate
+    inverse = Estimate(1.0 / estimate.value, None,
+                       tuple(None if e is None else 1.0 / e for e in estimate.interval[::-1]))
+    wide = _widened(inverse, ratio)
+    lo, hi = wide.interval
+    interval = (None if hi is None or hi <= 0 else 1.0 / hi, None if lo is None or lo <= 0 else 1.0 / lo)
+    return replace(estimate, stderr=None if estimate.stderr is None else estimate.stderr * ratio, interval=interval)
