@@ -149,7 +149,7 @@ def main():
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--json", required=True)
     p.add_argument("--macros")
-    p.add_argument("--models", nargs="+", default=[],
+    p.add_argument("--models", nargs="*", required=True,
                    help="also time each contact model (by name; the cylinders are the baseline of the ratios): the "
                         "walk through history --signal --model, scaled to 0.9 of the model's gross-slip torque, in a "
                         "fresh process, and a warm solve(torque=...) in this one (``model_cases``)")
