@@ -122,6 +122,7 @@ def test_quantised_channel_noise_floor():
     ({"torque_offset": 0.1}, "torque offset"),
     ({"lag": 5e-3}, "lag"),
     ({"lag": 5e-3, "drift": 1e-5}, "lag"),
+    ({"start_phase": 0.5}, "non-virgin start"),
 ])
 def test_rig_defects_are_covered_or_named(defect, word):
     rig = RIG.with_(**defect)
@@ -136,13 +137,14 @@ def test_defects_found_are_named_with_their_size():
     rig = RIG.with_(torque_offset=0.1, lag=5e-3)
     time, torque, twist = torque_controlled(rig, 1.3, torque_noise=_noise(1.3), twist_noise=TWIST_NOISE, seed=13)
     fit = _fit(time, torque, twist, time=time)
-    named = {w.split(":")[0]: w for w in fit.warnings}
-    assert {"torque offset", "lag"} <= named.keys()
-    offset = float(named["torque offset"].split(":")[1].split()[0])
+    named = {w.split(" (")[0].split(":")[0]: w for w in fit.warnings}
+    # a torque offset is not told from a record that starts after a history: both are fitted on the steady branches
+    assert {"torque offset or non-virgin start", "lag"} <= named.keys()
     lag = float(named["lag"].split(":")[1].split()[0])
-    # within a few times the noise's resolution of them: 0.02 N m of noise over 400 samples, 1e-5 rad over a slope
-    assert abs(offset - 0.1) < 0.03
+    # within a few times its resolution: 1e-5 rad of twist noise over a twist rate of about 1e-3 rad per 0.1 s
     assert abs(lag - 5e-3) < 1.5e-3
+    lo, hi = fit.friction.interval
+    assert lo <= RIG.friction <= hi
     unhandled = _fit(time, torque, twist, time=time, check_defects=False)
     assert unhandled.warnings == ()
 
@@ -154,3 +156,16 @@ def test_clean_records_raise_no_defect(seed):
         time, torque, twist = kind(RIG, amplitude, torque_noise=0.005 * np.ptp(torque), twist_noise=TWIST_NOISE,
                                    seed=seed)
         assert _fit(time, torque, twist, time=time).warnings == ()
+
+
+@pytest.mark.parametrize("seed", [14, 15])
+@pytest.mark.parametrize("lag", [2e-3, 5e-3])
+def test_stuck_contact_with_a_lag_never_gets_a_friction_value(lag, seed):
+    # T* 0.8 at 1 Hz: the lag opens the straight loop into an ellipse that a partial-slip loop imitates
+    rig = RIG.with_(lag=lag)
+    time, torque, twist = torque_controlled(rig, 0.8, torque_noise=_noise(0.8), twist_noise=TWIST_NOISE, seed=seed)
+    fit = _fit(time, torque, twist, time=time)
+    assert fit.friction.value is None
+    assert fit.stick_test >= 0.0
+    if fit.slip_detected:
+        assert any(w.startswith("lag") for w in fit.warnings)

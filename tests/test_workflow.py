@@ -106,35 +106,51 @@ def test_workflow_tests_run_on_one_worker(request):
 
 def test_default_configuration_dag_dry_run():
     rules = planned_rules(snakemake("-n", "--forceall", config=None))
-    assert {"paper", "report", "notebook", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig5_cyclic",
+    assert {"paper", "supplement", "companion", "response", "report", "notebook", "fig2_contours", "fig3_torque_curve",
+            "fig4_interface", "fig5_cyclic",
             "torque_table", "errata", "reference_weak_form", "precision_crosscheck"} <= rules
 
 
 def test_end_to_end_builds_every_deliverable(built):
     pdf = built / "paper" / "ms.pdf"
     assert pdf.stat().st_size > 50_000
+    assert (built / "paper" / "companion.pdf").stat().st_size > 50_000
     for name in ("fig2_sigma_zt", "fig3_torque_curve", "fig4_slip", "fig5_cyclic", "hysteresis", "von_mises"):
         assert (built / "figures" / f"{name}.pdf").exists() and (built / "figures" / f"{name}.png").exists()
-    log = (built / "paper" / "build" / "ms.log").read_text(errors="replace")
-    assert "undefined result" not in log and "There were undefined references" not in log
+    for log in (built / "paper" / "build" / "ms.log", built / "paper" / "build-companion" / "companion.log"):
+        text = log.read_text(errors="replace")
+        assert "undefined result" not in text and "There were undefined references" not in text, log
     # no absolute path of this machine inside the outputs
-    for path in (pdf, *(built / "figures").glob("*.pdf"), *(built / "notebooks").glob("*")):
+    papers = (built / "paper").glob("*.pdf")
+    for path in (*papers, *(built / "figures").glob("*.pdf"), *(built / "notebooks").glob("*")):
         assert str(ROOT).encode() not in path.read_bytes(), path
     for name in ("errata", "torque_table", "paper", "fig3_torque_curve"):
         assert (built / "logs" / f"{name}.log").exists()
 
 
-@pytest.mark.skipif(shutil.which("pdffonts") is None, reason="poppler's pdffonts is not installed")
-def test_the_manuscript_and_supplement_embed_every_font_as_an_outline_font(built):
+def test_the_papers_and_supplement_embed_every_font_as_an_outline_font(built):
     """No font of the PDFs is a Type 3 bitmap (TeX's pk fonts, e.g. the text companion's \\textmu or \\S where
-    cm-super is missing: blurred glyphs, refused by journals) and every font is embedded."""
-    for pdf in (built / "paper" / "ms.pdf", built / "paper" / "supplement.pdf"):
-        listing = subprocess.run(["pdffonts", str(pdf)], capture_output=True, text=True, check=True).stdout
-        rows = listing.splitlines()[2:]
-        assert rows, listing
-        assert not [row for row in rows if "Type 3" in row], listing
-        # the "emb" column (third from the right of "emb sub uni object ID") says yes for every font
-        assert all(row.split()[-5] == "yes" for row in rows), listing
+    cm-super is missing: blurred glyphs, refused by journals) and every font is embedded (read with PyMuPDF, a
+    pinned package: no poppler needed)."""
+    pymupdf = pytest.importorskip("pymupdf")
+    for name in ("ms", "supplement", "companion"):
+        with pymupdf.open(built / "paper" / f"{name}.pdf") as document:
+            fonts = {font[:4] for page in document for font in page.get_fonts(full=True)}  # xref, ext, type, name
+        assert fonts, name
+        assert not [font for font in fonts if font[2] == "Type3"], (name, fonts)
+        assert not [font for font in fonts if font[1] == "n/a"], (name, fonts)  # n/a: not embedded
+
+
+def test_every_text_of_the_papers_prints_at_seven_points_or_more(built):
+    """Figures are drawn at the width they are included: every label, tick, legend and caption of the papers and
+    the supplement prints at 7 pt or more (scripts next to full-size text at 70 % of it; tests/pdf_fonts.py)."""
+    pytest.importorskip("pymupdf")
+    from pdf_fonts import too_small
+
+    for name in ("ms", "supplement", "companion"):
+        offenders = too_small(built / "paper" / f"{name}.pdf")
+        assert not offenders, f"{name}.pdf: " + "; ".join(
+            f"p. {s.page} {s.size:.2f} pt {s.font} {s.text!r}" for s in offenders[:20])
 
 
 def test_a_clean_build_survives_a_hard_kill(interrupted_build, dry_run_when_built):
@@ -169,14 +185,16 @@ def test_the_ladder_reuses_the_cross_checks_converged_weak_forms(built):
                       "a second factorisation: ten times the solve's rounding")
 
 
-def test_manuscript_cites_every_reference_and_resolves_every_label(built):
-    build = built / "paper" / "build"
-    log = (build / "ms.log").read_text(errors="replace")
-    assert not re.search(r"(Reference|Citation) `[^']*' .*undefined", log), "undefined reference or citation"
-    assert "There were undefined" not in log and "undefined result" not in log
+def test_the_papers_cite_every_reference_and_resolve_every_label(built):
+    """The paper, its supplement and the companion paper share references.bib: every entry is cited by one of
+    them, and none of them leaves a reference, a citation or a generated number undefined."""
     cited = set()
-    for keys in re.findall(r"\\citation\{([^}]*)\}", (build / "ms.aux").read_text()):
-        cited.update(k.strip() for k in keys.split(","))
+    for build, name in (("build", "ms"), ("build-supplement", "supplement"), ("build-companion", "companion")):
+        log = (built / "paper" / build / f"{name}.log").read_text(errors="replace")
+        assert not re.search(r"(Reference|Citation) `[^']*' .*undefined", log), f"{name}: undefined reference"
+        assert "There were undefined" not in log and "undefined result" not in log, name
+        for keys in re.findall(r"\\citation\{([^}]*)\}", (built / "paper" / build / f"{name}.aux").read_text()):
+            cited.update(k.strip() for k in keys.split(","))
     entries = set(re.findall(r"^@\w+\{([^,]+),", (ROOT / "paper" / "references.bib").read_text(), re.M))
     assert entries - cited == set(), f"uncited bibliography entries: {sorted(entries - cited)}"
     assert cited - entries == set(), f"citations without an entry: {sorted(cited - entries)}"
@@ -264,7 +282,7 @@ def rebuilt_after_deleting(built):
 def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built, rebuilt_after_deleting):
     planned, _, _, dry_run_after = rebuilt_after_deleting
     assert planned == {"fig5_cyclic", "errata_tables", "torque_curve", "fig3_torque_curve", "paper", "supplement",
-                       "notebook", "report", "all"}, planned
+                       "response", "notebook", "report", "all"}, planned
     assert all((built / rel).exists() for rel in DELETED)
     assert "Nothing to be done" in dry_run_after
 
@@ -275,7 +293,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built, rebu
         # a verification module: only verification rules, their tables, the manuscript, its supplement,
         # notebook and report
         ("src/torsional_contact/verification/errata/appendix_a.py",
-         {"errata", "errata_tables", "paper_tables", "paper", "supplement", "notebook", "report", "all"}),
+         {"errata", "errata_tables", "paper_tables", "paper", "supplement", "response", "notebook", "report", "all"}),
         # the figure helpers: every figure, the manuscript and the report (no data or verification rule)
         ("workflow/scripts/_plotting.py",
          {"fig_schematic", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig_published_vs_complete",
@@ -283,7 +301,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built, rebu
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
           "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit",
           "fig_half_space_curves", "fig_half_space_energy",
-              "paper", "supplement", "report", "all"}),
+              "paper", "supplement", "companion", "report", "all"}),
     ],
 )
 def test_editing_a_module_reruns_exactly_the_rules_that_import_it(built, module, expected):
@@ -305,7 +323,7 @@ def test_changing_the_style_reruns_only_figures_and_what_shows_them(built):
         rules = planned_rules(snakemake("-n"))
     finally:
         style.write_bytes(original)
-    assert "paper" in rules and all(r.startswith("fig") or r in ("paper", "supplement", "report", "all")
+    assert "paper" in rules and all(r.startswith("fig") or r in ("paper", "supplement", "companion", "report", "all")
                                     for r in rules), rules
 
 

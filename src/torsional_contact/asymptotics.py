@@ -46,7 +46,7 @@ with delta = (pi/2) e - (pi^3/64) e^2 + O(e^3 ln e) from (S1):
 
     W_mono = (pi^4/12) e^3 [1 + (1/2 - 3 pi^2/64) e + O(e^2 ln e)],   e = T* - 1.        (S8)
 
-The coefficient 1/2 - 3 pi^2/64 = 0.037358 replaces a value fitted to the curve table
+The coefficient 1/2 - 3 pi^2/64 = 0.0373623 replaces a value fitted to the curve table
 (0.04); a fit of (W_mono / ((pi^4/12) e^3) - 1)/e = c + e (alpha ln e + beta) + e^2 (gamma ln e
 + kappa) to the Abel-Fredholm work (W2) on 3e-4 <= delta <= 3e-2 gives c = 0.0373638, 1.5e-6
 from (S8), with alpha = -2.8 (tests/test_extremes.py; the 30-digit reference at b = 0.999

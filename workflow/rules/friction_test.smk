@@ -33,7 +33,7 @@ rule friction_test_coverage:
         " > {log} 2>&1"
 
 
-# Figures for experimenters (notebooks/friction_test.py, paper/sections/friction_test.tex): the lab
+# Figures for experimenters (notebooks/friction_test.py, paper/companion/rig_defects.tex): the lab
 # specimen and record are committed in notebooks/data/ (made by workflow/scripts/make_lab_loop.py).
 LAB_LOOP = "notebooks/data/lab_loop.csv"
 LAB_TRUTH = "notebooks/data/lab_loop.json"

@@ -1,5 +1,5 @@
 # The half-space comparison model against the finite cylinders (the manuscript section
-# paper/sections/half_space.tex): two figures, a table and the numbers the text quotes.
+# paper/companion/models.tex): two figures, a table and the numbers the text quotes.
 
 HALF_SPACE = config["half_space"]
 

@@ -1,13 +1,17 @@
-# The manuscript and its supplement: paper/ms.tex and paper/supplement.tex with generated figures,
-# tables and macros, compiled by latexmk.  Their inputs are read off the LaTeX sources themselves:
-# every \resultsdir/... path and every \loadresults{name} (results/macros/name.tex), in the main
-# file and in every paper/sections/*.tex it \input's, so nothing is listed twice by hand and a
-# section added with one \input{sections/NAME} brings its figures and macros into the rule.
+# The three LaTeX documents: the paper (paper/ms.tex), its supplement (paper/supplement.tex) and the
+# companion paper on reading friction from torsion loops (paper/companion.tex, its sections in
+# paper/companion/), with generated figures, tables and macros, compiled by latexmk.  Their inputs
+# are read off the LaTeX sources themselves: every \resultsdir/... path and every \loadresults{name}
+# (results/macros/name.tex), in the main file and in every paper/*.tex file it \input's (recursively:
+# paper/preamble.tex, paper/companion/NAME.tex), so nothing is listed twice by hand and a section
+# added with one \input{companion/NAME} brings its figures and macros into the rule.
 import re
 
 MANUSCRIPT = "paper/ms.tex"
 SUPPLEMENT = "paper/supplement.tex"
 SUPPLEMENT_PDF = f"{OUT}/paper/supplement.pdf"
+COMPANION = "paper/companion.tex"
+COMPANION_PDF = f"{OUT}/paper/companion.pdf"
 
 
 def _uncommented(path):
@@ -17,14 +21,16 @@ def _uncommented(path):
 
 
 def tex_sources(main):
-    """``main`` and the paper/sections/*.tex files it \\input's (recursively), in order of first appearance."""
+    """``main`` and the paper/*.tex files it \\input's (recursively), in order of first appearance.
+
+    An \\input of a generated file (``\\resultsdir/...``) starts with a backslash and is not followed."""
     found, queue = [], [main]
     while queue:
         path = queue.pop(0)
         if path in found:
             continue
         found.append(path)
-        for name in re.findall(r"\\input\{(sections/[\w./-]+?)(?:\.tex)?\}", _uncommented(path)):
+        for name in re.findall(r"\\input\{(\w[\w./-]*?)(?:\.tex)?\}", _uncommented(path)):
             queue.append(f"paper/{name}.tex")
     return found
 
@@ -83,7 +89,7 @@ rule paper_tables:
         " --macros {output.macros} > {log} 2>&1"
 
 
-# -cd: latexmk runs in paper/ so references.bib and sections/ are found; \resultsdir is relative to paper/
+# -cd: latexmk runs in paper/ so references.bib, preamble.tex and companion/ are found; \resultsdir is relative to paper/
 LATEXMK = ("mkdir -p {params.build} && latexmk -cd -pdf -interaction=nonstopmode -halt-on-error"
            " -outdir=$(realpath {params.build}) -usepretex='\\def\\resultsdir{{{params.results}}}'"
            " {input.tex} > {log} 2>&1")
@@ -109,6 +115,26 @@ rule paper:
         LATEXMK + " && cp {params.build}/ms.pdf {output}.tmp && mv {output}.tmp {output}"
 
 
+rule companion:
+    input:
+        tex=COMPANION,
+        sections=tex_sources(COMPANION)[1:],
+        bib="paper/references.bib",
+        results=latex_inputs(COMPANION),
+    output:
+        COMPANION_PDF,
+    params:
+        build=f"{OUT}/paper/build-companion",
+        results=os.path.relpath(OUT, "paper"),
+    log:
+        logfile("companion"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        LATEXMK + " && cp {params.build}/companion.pdf {output}.tmp && mv {output}.tmp {output}"
+
+
 rule supplement:
     input:
         tex=SUPPLEMENT,
@@ -129,6 +155,34 @@ rule supplement:
         LATEXMK + " && cp {params.build}/supplement.pdf {output}.tmp && mv {output}.tmp {output}"
 
 
+
+
+RESPONSE = "paper/response_to_referee.md"
+
+
+def response_macros():
+    """The macro files of the three documents: the response quotes their numbers."""
+    paths = set()
+    for document in (MANUSCRIPT, SUPPLEMENT, COMPANION):
+        paths |= {p for p in latex_inputs(document) if p.startswith(f"{OUT}/macros/")}
+    return sorted(paths)
+
+
+rule response:
+    input:
+        script="workflow/scripts/build_response.py",
+        lib=lib("workflow/scripts/build_response.py"),
+        template=RESPONSE,
+        macros=response_macros(),
+    output:
+        f"{OUT}/paper/response_to_referee.md",
+    log:
+        logfile("response"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --template {input.template} --macros {input.macros} --output {output} > {log} 2>&1"
 
 
 REPORT = f"{OUT}/report.html"
@@ -165,4 +219,6 @@ localrules:
     paper_tables,
     paper,
     supplement,
+    companion,
+    response,
     report,

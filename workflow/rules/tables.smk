@@ -41,6 +41,27 @@ rule torque_table:
         " --csv {output.csv} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
 
 
+rule limit_problem_table:
+    input:
+        script="workflow/scripts/limit_problem_table.py",
+        lib=lib("workflow/scripts/limit_problem_table.py"),
+    output:
+        json=f"{OUT}/data/limit_problem.json",
+        tex=f"{OUT}/tables/limit_problem.tex",
+        macros=f"{OUT}/macros/limit_problem.tex",
+    params:
+        radii=config["limit_problem"]["stick_radii"],
+        n=config["limit_problem"]["n_terms"],
+    log:
+        logfile("limit_problem_table"),
+    resources:
+        runtime=5,
+        mem_mb=1000,
+    shell:
+        "python {input.script} --stick-radii {params.radii} --n-terms {params.n}"
+        " --json {output.json} --tex {output.tex} --macros {output.macros} > {log} 2>&1"
+
+
 rule convergence_table:
     input:
         script="workflow/scripts/convergence_table.py",

@@ -5,7 +5,9 @@ import os
 import platform
 from importlib import metadata
 
+from torsional_contact import asymptotics
 from torsional_contact.provenance import latex_escape, write_macros
+from torsional_contact.typeset import sci
 
 #: How the manuscript names the method of the field figures.
 METHOD_NAMES = {"fast": "Abel--Fredholm method", "complete": "complete weak form, $N = {n}$",
@@ -26,6 +28,12 @@ def main():
         "contour-b": f"{a.contour_stick_radius:g}",
         "python-version": platform.python_version(),
         **{f"version-{k}": latex_escape(v) for k, v in versions.items()},
+        # where the solver switches from the Abel-Fredholm method to the expansions about the two limits
+        "switch-onset-scalars": sci(asymptotics.ONSET_SCALARS, 0, always=True),
+        "switch-onset-fields": sci(asymptotics.ONSET_FIELDS, 0, always=True),
+        "switch-spinning": sci(asymptotics.SPINNING_SWITCH, 0, always=True),
+        "onset-work-coefficient": f"{asymptotics.ONSET_WORK_COEFFICIENT:.7f}",
+        "spinning-rotation-constant": f"{asymptotics.spinning_rotation_constant():.6f}",
         "machine": latex_escape(f"{platform.system()} {platform.machine()}, {os.cpu_count()} cores"),
     }, "workflow/scripts/build_macros.py")
 

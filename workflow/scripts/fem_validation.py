@@ -187,10 +187,10 @@ def table(records, levels, degree):
     ]
     labels = {"torque": "$T^*$", "rigid_rotation": r"$\omega\mu/fp_0$",
               "u_theta": rf"$u_\theta({DISPLACEMENT_POINT[0]:g}, {DISPLACEMENT_POINT[1]:g})$",
-              "stress": r"$\sigma_{z\theta}, \sigma_{r\theta}$"}
+              "stress": r"$\sigma_{z\theta}, \sigma_{r\theta}$", "stick_traction": r"stick traction $q$"}
     for k, record in enumerate(records):
         comparison = record["comparison"]
-        for j, name in enumerate(("torque", "rigid_rotation", "u_theta", "stress")):
+        for j, name in enumerate(("torque", "rigid_rotation", "u_theta", "stress", "stick_traction")):
             c = comparison[name]
             first = f"{record['stick_radius']:.2f}" if j == 0 else ""
             lines.append(f"{first} & {labels[name]} & {_fixed(c.get('fem'))} & {_fixed(c.get('abel_fredholm'))} & "
@@ -203,7 +203,8 @@ def table(records, levels, degree):
     lines += [r"\bottomrule", r"\end{tabular}",
               f"% P{degree} elements, mesh levels {', '.join(map(str, levels))}; FEM est. = change between the two "
               "finest levels; order from the three finest levels (no reference); stresses: max over "
-              f"{len(STRESS_POINTS)} points {STRESS_POINTS} and both components; torque balance: "
+              f"{len(STRESS_POINTS)} points {STRESS_POINTS} and both components; stick traction: max over the radii "
+              f"{TRACTION_FRACTIONS} times b; torque balance: "
               "4 int_0^1 sigma_zt(r, 0) r^2 dr - T* of the FEM traction"]
     return "\n".join(lines) + "\n"
 

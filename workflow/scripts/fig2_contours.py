@@ -43,7 +43,7 @@ def main():
     use_style(a.style)
     for quantity, pdf, png in figures:
         values = fields[quantity]
-        fig, ax = subplots(figsize=(3.1, 2.8))  # printed at half the text width: fonts at nominal size
+        fig, ax = subplots(figsize=(3.0, 2.8))  # printed at half the text width: fonts at nominal size
         levels = 21
         filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
         ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)

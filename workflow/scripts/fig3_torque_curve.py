@@ -33,11 +33,14 @@ def main():
     use_style(a.style)
     fig, ax = subplots(figsize=(4.4, 3.6))
     ax.axvspan(4 / 3, T_RANGE[1], color="0.92", lw=0)
-    ax.text(0.5 * (4 / 3 + T_RANGE[1]), 0.97, "above spinning:\nimpossible", ha="center", va="top", fontsize=7.5,
+    ax.text(0.5 * (4 / 3 + T_RANGE[1]), 0.97, "above spinning:\nimpossible", ha="center", va="top", fontsize=8,
             color="0.35")
     curves = (
-        ("torque_fast", dict(color="k", lw=2.4, label="converged (Abel–Fredholm)")),
-        ("torque_complete", dict(color="C0", lw=1.2, ls=(0, (5, 2)), label=f"complete weak form, $N = {a.n_terms}$")),
+        # the complete weak form lies on the converged curve at this scale: the converged curve is a wide grey band
+        # and the complete weak form a dark line with markers on top of it, so that both stay visible
+        ("torque_fast", dict(color="0.72", lw=5.0, solid_capstyle="butt", label="converged (Abel–Fredholm)")),
+        ("torque_complete", dict(color="C0", lw=1.0, marker="o", ms=3.2, mfc="white", markevery=0.06,
+                                 label=f"complete weak form, $N = {a.n_terms}$")),
         ("torque_published", dict(color="C1", lw=1.3, label="reconstructed printed scheme,\nclosure $q(b) = 1$")),
         ("torque_published_torque_closure",
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)), label="reconstructed printed scheme,\ntorque closure")),
@@ -51,8 +54,10 @@ def main():
         if off.any():  # the curve leaves the frame: mark where, with the largest T* it reaches
             exit_b = b[off].max()
             ax.plot([T_RANGE[1]], [exit_b], marker=">", color=style["color"], ms=6, clip_on=False)
-            ax.annotate(f"$T^*$ up to {torque.max():.2f}\nbelow $b/a = {exit_b:.2f}$", (T_RANGE[1], exit_b),
-                        xytext=(-4, -10), textcoords="offset points", ha="right", va="top", fontsize=7.5,
+            # the largest T* on this curve's grid, and where: the grid reaches smaller b than the tables
+            peak_b = b[int(np.argmax(torque))]
+            ax.annotate(f"$T^*$ up to {torque.max():.2f}\nat $b/a = {peak_b:.3f}$", (T_RANGE[1], exit_b),
+                        xytext=(-4, -10), textcoords="offset points", ha="right", va="top", fontsize=8,
                         color=style["color"])
     ax.axvline(1.0, color="0.5", lw=0.8)
     ax.axvline(4 / 3, color="0.5", lw=0.8)
@@ -62,7 +67,7 @@ def main():
     ax.set_ylim(0, 1.0)
     ax.set_xlabel(r"$T^* = 2T/(fFa)$")
     ax.set_ylabel(r"stick radius $b/a$")
-    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=7.5, handlelength=2.6,
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=8, handlelength=2.6,
                frameon=False)
     fig.tight_layout(rect=(0, 0.17, 1, 1))  # the legend below the axes, off the curves
     save_figure(fig, a.pdf, a.png)

@@ -27,25 +27,19 @@ def main():
         warnings.simplefilter("error")  # a noise-limited fit would be a wrong figure: fail the job
         fit = fit_loop(torque, twist, radius=truth["radius"], normal_force=truth["normal_force"])
     use_style(a.style)
-    fig, (loop, residual) = subplots(1, 2, figsize=(7.2, 3.0), gridspec_kw={"width_ratios": [1.4, 1]})
+    fig, (loop, residual) = subplots(1, 2, figsize=(6.2, 3.0), gridspec_kw={"width_ratios": [1.4, 1]})  # printed size
     loop.plot(twist * 1e3, torque, ".", markersize=2, color="0.55", label="record")
     loop.plot(twist * 1e3, fit.fitted_torque, "-", linewidth=1.0, label="fitted model")
     loop.set_xlabel(r"twist $\theta$ [mrad]")
     loop.set_ylabel(r"torque $T$ [N m]")
-    f, g, c = fit.friction, fit.shear_modulus, fit.compliance
-    text = (f"f = {f.value:.4f}  [{f.interval[0]:.4f}, {f.interval[1]:.4f}]  (true {truth['friction']:g})\n"
-            f"G = {g.value / 1e9:.1f} GPa  [{g.interval[0] / 1e9:.1f}, {g.interval[1] / 1e9:.1f}]  "
-            f"(true {truth['shear_modulus'] / 1e9:g})\n"
-            f"C = {c.value * 1e3:.4f} mrad/(N m)  [{c.interval[0] * 1e3:.4f}, {c.interval[1] * 1e3:.4f}]  "
-            f"(true {truth['compliance'] * 1e3:.4f})")
-    loop.set_title(text, fontsize=6, loc="left", family="monospace")
-    loop.legend(fontsize=7, loc="lower right")
+    # the fitted values and their intervals are quoted in the text (generated macros), not typed in the figure
+    loop.set_title(f"fit of {torque.size} samples", fontsize=8, loc="left")
+    loop.legend(fontsize=8, loc="lower right")
     residual.plot(np.arange(torque.size), torque - fit.fitted_torque, ".", markersize=2, color="0.3")
     residual.axhline(0.0, color="0.6", linewidth=0.6)
     residual.set_xlabel("sample")
     residual.set_ylabel(r"torque residual $T_i - T_{\mathrm{model}}$ [N m]")
-    residual.set_title(f"rms {fit.torque_residual_rms:.3g} N m, noise estimate {fit.noise['torque']:.3g} N m",
-                       fontsize=7)
+    residual.set_title(f"rms {fit.torque_residual_rms:.3g} N m, noise {fit.noise['torque']:.3g} N m", fontsize=8)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

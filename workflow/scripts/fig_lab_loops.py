@@ -23,7 +23,7 @@ def main():
     s = Specimen(radius=data["radius"], normal_force=data["normal_force"], friction=data["friction"],
                  shear_modulus=data["shear_modulus"])
     use_style(a.style)
-    fig, (loops, energy) = subplots(1, 2, figsize=(7.2, 3.0))
+    fig, (loops, energy) = subplots(1, 2, figsize=(6.2, 3.2))  # printed at its size (text width 6.3 in)
     phase = np.linspace(0.0, 2.0, 801)
     for amplitude in a.amplitudes:
         torque = amplitude * np.sin(2 * np.pi * phase)
@@ -38,15 +38,15 @@ def main():
     energy.semilogy(amplitudes, work * 1e6, "-", label="per cycle, $W(2T^*_a)(fp_0)^2a^3/\\mu$")
     for torque, name in ((s.slip_onset_torque, "slip onset $fFa/2$"), (s.gross_slip_torque, "gross slip $2fFa/3$")):
         energy.axvline(torque, color="0.5", linestyle=":", linewidth=0.8)
-        energy.annotate(name, (torque, work[work > 0].min() * 1e6), rotation=90, fontsize=7, ha="right", va="bottom")
+        energy.annotate(name, (torque, work[work > 0].min() * 1e6), rotation=90, fontsize=7.5, ha="right", va="bottom")
     energy.set_xlabel(r"torque amplitude $T_a$ [N m]")
     energy.set_ylabel(r"energy per cycle [$\mu$J]")
-    energy.legend(fontsize=7)
-    fig.suptitle(f"a = {s.radius * 1e3:g} mm, F = {s.normal_force:g} N, f = {s.friction:g}, "
-                 f"G = {s.shear_modulus / 1e9:g} GPa", fontsize=8)
-    fig.legend(handles, labels, title="torque amplitude", loc="lower center", ncol=len(labels), fontsize=7,
-               title_fontsize=7, frameon=False)
-    fig.tight_layout(rect=(0, 0.12, 1, 1))  # the loops' legend below the panels, off the data
+    energy.legend(fontsize=7.5)
+    fig.suptitle(f"$a$ = {s.radius * 1e3:g} mm, $F$ = {s.normal_force:g} N, $f$ = {s.friction:g}, "
+                 f"$\\mu$ = {s.shear_modulus / 1e9:g} GPa", fontsize=8)
+    fig.legend(handles, labels, title="torque amplitude", loc="lower center", ncol=len(labels), fontsize=7.5,
+               title_fontsize=7.5, frameon=False)
+    fig.tight_layout(rect=(0, 0.14, 1, 1))  # the loops' legend below the panels, off the data
     save_figure(fig, a.pdf, a.png)
 
 

@@ -25,31 +25,34 @@ def main():
     data = json.loads(open(a.specimen, encoding="utf-8").read())
     radius, friction, modulus = data["radius"], data["friction"], data["shear_modulus"]
     force = np.linspace(0.0, a.max_force, 301)[1:]
-    onset = 0.5 * friction * force * radius
-    spin = 2.0 / 3.0 * friction * force * radius
     use_style(a.style)
-    fig, ax = subplots(figsize=(4.6, 3.4))
-    top = 1.15 * spin[-1]
-    ax.fill_between(force, 0, onset, color="#d9ecd9", label="stick (shakedown)")
-    ax.fill_between(force, onset, spin, color="#fde9c8", label="partial slip")
-    ax.fill_between(force, spin, top, color="#f6d0d0", label="gross slip (spinning)")
+    # the torque amplitude in units of the slip-onset torque f F a / 2: the regimes are bands of the same
+    # height at every force (stick below 1, partial slip up to 4/3, gross slip above), and the energy
+    # contours fill the partial-slip band instead of a thin wedge
+    fig, ax = subplots(figsize=(4.6, 3.9))
+    low, top = 0.85, 1.45
+    ax.axhspan(low, 1.0, color="#d9ecd9", label="stick (shakedown)")
+    ax.axhspan(1.0, 4.0 / 3.0, color="#fde9c8", label="partial slip")
+    ax.axhspan(4.0 / 3.0, top, color="#f6d0d0", label="gross slip (spinning)")
     # energy per cycle in the partial-slip band: W(2 T*_a) (f F)^2 / (pi^2 mu a)
     grid_force, ratio = np.meshgrid(force, np.linspace(1.0005, 4.0 / 3.0 - 1e-6, 200))
     work = 4.0 * monotonic_curves().work(ratio) * (friction * grid_force) ** 2 / (np.pi**2 * modulus * radius)
-    levels = 10.0 ** np.arange(-7, -1)
-    lines = ax.contour(grid_force, ratio * 0.5 * friction * grid_force * radius, work, levels=levels,
-                       colors="0.25", linewidths=0.6)
-    ax.clabel(lines, fmt=lambda v: f"$10^{{{round(np.log10(v))}}}$ J", fontsize=6)
+    levels = 10.0 ** np.arange(-8, -1)
+    lines = ax.contour(grid_force, ratio, work, levels=levels, colors="0.25", linewidths=0.6)
+    ax.clabel(lines, fmt=lambda v: f"$10^{{{round(np.log10(v))}}}$ J", fontsize=7.5)
     example = Specimen(radius=radius, normal_force=data["normal_force"], friction=friction, shear_modulus=modulus)
-    ax.plot([data["normal_force"]], [1.8], "k*", label=f"1.8 N m at {data['normal_force']:g} N: "
-            f"{example.energy_per_cycle(1.8) * 1e6:.3g} $\\mu$J/cycle")
+    amplitude = 1.8  # N m, the example of the text
+    example_ratio = amplitude / (0.5 * friction * data["normal_force"] * radius)
+    ax.plot([data["normal_force"]], [example_ratio], "k*", ms=8,
+            label=f"{amplitude:g} N m at {data['normal_force']:g} N: "
+            f"{example.energy_per_cycle(amplitude) * 1e6:.3g} $\\mu$J/cycle")
     ax.set_xlim(0, a.max_force)
-    ax.set_ylim(0, top)
+    ax.set_ylim(low, top)
     ax.set_xlabel(r"normal force $F$ [N]")
-    ax.set_ylabel(r"torque amplitude $T_a$ [N m]")
-    ax.set_title(f"a = {radius * 1e3:g} mm, f = {friction:g}, G = {modulus / 1e9:g} GPa; contours: energy per cycle",
-                 fontsize=7)
-    ax.legend(fontsize=6, loc="upper left")
+    ax.set_ylabel(r"torque amplitude $2T_a/(fFa)$")
+    ax.set_title(f"$a$ = {radius * 1e3:g} mm, $f$ = {friction:g}, $\\mu$ = {modulus / 1e9:g} GPa; "
+                 "contours: energy per cycle", fontsize=8)
+    ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)  # off the data
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

@@ -64,7 +64,7 @@ def main():
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
     ]
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(6.3, 4.9), sharex=True)
+    fig, axes = subplots(2, 2, figsize=(6.2, 4.9), sharex=True)  # printed at its size (text width 6.3 in)
     (slip_ax, trac_ax), (dslip_ax, dtrac_ax) = axes
     s_ref, q_ref = converged.slip(r), converged.traction(r)
     slip_range = (-0.08, 0.2)

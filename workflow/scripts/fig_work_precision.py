@@ -36,9 +36,10 @@ def main():
         ax.set_ylabel("wall time per stick radius [ms]")
         ax.invert_xaxis()
     left.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
-    fig.legend(*left.get_legend_handles_labels(), fontsize=7.5, title=f"$b/a = {mid['stick_radius']:g}$",
-               title_fontsize=7.5, loc="lower center", ncol=3, frameon=False)
-    fig.tight_layout(rect=(0, 0.2, 1, 1))  # one legend for both panels, below them
+    # two columns: three would make the legend wider than the text width, and the figure would be shrunk
+    fig.legend(*left.get_legend_handles_labels(), fontsize=8, title=f"$b/a = {mid['stick_radius']:g}$",
+               title_fontsize=8, loc="lower center", ncol=2, frameon=False)
+    fig.tight_layout(rect=(0, 0.27, 1, 1))  # one legend for both panels, below them
     save_figure(fig, a.pdf, a.png)
 
 

@@ -92,6 +92,23 @@ def dissipation_law(method, n_terms):
         "predicted_exponent": 3,
         "predicted_prefactor": float(np.pi**4 / 3),
         "ratio_at_smallest": float(w[0] / H.threshold_asymptotics(eps[0])["dissipation"]),
+        # W / ((pi^4/3) eps^3) over the grid: where the threshold law holds
+        "ratio_to_law": (w / H.threshold_asymptotics(eps)["dissipation"]).tolist(),
+    }
+
+
+def law_ratios(law):
+    """Macros: W / ((pi^4/3) eps^3) at the grid point nearest eps = 0.01, at the largest eps, and the largest eps
+    at which the ratio is within 5 % of 1 (the threshold law's range of validity)."""
+    eps, ratio = np.asarray(law["eps"]), np.asarray(law["ratio_to_law"])
+    near = int(np.argmin(np.abs(np.log(eps / 0.01))))
+    within = eps[np.abs(ratio - 1.0) <= 0.05]
+    return {
+        "hist-law-eps-small": f"{eps[near]:.3f}",
+        "hist-law-ratio-small": f"{ratio[near]:.4f}",
+        "hist-law-eps-large": f"{eps[-1]:.2f}",
+        "hist-law-ratio-large": f"{ratio[-1]:.3f}",
+        "hist-law-eps-five-percent": f"{within.max():.3f}" if within.size else "--",
     }
 
 
@@ -158,6 +175,10 @@ def main():
             "hist-fit-exponent": f"{law['fitted_exponent']:.3f}",
             "hist-fit-prefactor": f"{law['fitted_prefactor']:.1f}",
             "hist-predicted-prefactor": f"{law['predicted_prefactor']:.1f}",
+            "hist-fit-eps-min": sci(law["fit_range"][0], 1),
+            "hist-fit-eps-max": sci(law["fit_range"][1], 1),
+            # the validity of W ~ (pi^4/3) eps^3: its ratio to W at about 0.01 and at the largest eps
+            **law_ratios(law),
             "hist-loop-energy-agreement": sci(max(loop_err, 1e-16), 0),
             "hist-cycle-energy-agreement": sci(max(energy_err, 1e-16), 0),
             "hist-method": "Abel--Fredholm" if fast else f"{a.method} weak form",

@@ -65,6 +65,15 @@ def shear_bound(solution):
     return float(resultant.max()), float(r[worst[0], 0]), float(z[0, worst[1]])
 
 
+def admissibility(solution):
+    """(max |q| on the stick disc, min slip on the slip annulus): the inequalities of the interface conditions
+    (|q| <= 1 in stick, s >= 0 in slip), which the method does not impose, checked a posteriori on 400 radii."""
+    b = solution.stick_radius
+    stick = np.linspace(0.0, b, 200, endpoint=False)
+    annulus = np.linspace(b, 1.0, 201)[1:]
+    return float(np.max(np.abs(solution.traction(stick)))), float(np.min(solution.slip(annulus)))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--stick-radii", type=float, nargs="+", required=True)
@@ -74,7 +83,7 @@ def main():
     p.add_argument("--macros")
     a = p.parse_args()
 
-    rows, bounds, extra = [], [], []
+    rows, bounds, extra, admissible = [], [], [], []
     lo, hi = resolution_limit(a.n_terms)
     for b in a.stick_radii:
         with warnings.catch_warnings():
@@ -85,6 +94,7 @@ def main():
             published = solve(stick_radius=b, method="published", n_terms=a.n_terms)
             torque_closure = solve_series(b, "published", a.n_terms, "torque").torque
         fine = solve(stick_radius=b, method="fast")
+        admissible.append(admissibility(fine))
         rows.append((b, complete.torque, fine.torque, complete.rigid_rotation, fine.rigid_rotation, published.torque))
         extra.append((torque_closure, *asymptote(b), not lo <= b <= hi))
         bounds.append((b, *shear_bound(solve(stick_radius=b, tolerance=1e-10))))
@@ -145,6 +155,11 @@ def main():
         values["table-resolved-max"] = f"{hi:.3f}"
         values["table-spinning-rows"] = f"{SPINNING_ROWS:g}"
         values["table-onset-rows"] = f"{ONSET_ROWS:g}"
+        traction_max = max(row[0] for row in admissible)
+        slip_min = min(row[1] for row in admissible)
+        values["admissible-traction-max"] = f"{traction_max:.4f}"
+        values["admissible-slip-min"] = sci(slip_min, 0) if slip_min != 0.0 else "0"
+        values["admissible-holds"] = "yes" if traction_max <= 1.0 and slip_min >= 0.0 else "no"
         print("max |shear| / T* over the near field:", worst)
         write_macros(a.macros, values, "workflow/scripts/torque_table.py")
 

@@ -52,7 +52,7 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from scipy import special
+from scipy import optimize, special
 
 from .profile import covariance
 from .results import Estimate
@@ -65,6 +65,12 @@ KINDS = (("torque offset", "N m", "N m"), ("twist drift", "rad/s", "rad per samp
 #: Level of each score test, and its critical value (chi-square, one degree of freedom).
 LM_LEVEL = 1e-4
 LM_CRITICAL = float(special.chdtri(1, LM_LEVEL))
+#: The virgin start is rejected when its LR on the later samples exceeds this (chi-square, 3 degrees of freedom,
+#: at ``LM_LEVEL``: the first segment fixes the virgin twist, the first turning point's torque and its twist).
+VIRGIN_CRITICAL = float(special.chdtri(3, LM_LEVEL))
+#: ... or exceeds this (chi-square, one degree of freedom, at 5 %) while the friction fitted without the first
+#: loading lies outside the interval fitted with it.
+VIRGIN_HINT = float(special.chdtri(1, 0.05))
 #: Gauss-Newton steps at most on the defects' sizes, and the gain (residual variances) below which they stop.
 STEPS = 4
 STEP_GAIN = 0.1
@@ -172,6 +178,76 @@ def _step(fitted, clock, kinds):
     return step, gain, r, jac, z
 
 
+def lag_line(model, clock: np.ndarray):
+    """The straight loop with a lag: (S, lag, S of the straight loop without it) by least squares on the residuals
+    (T_i - (theta_i + tau theta'_i - theta_0) / C) / w (module docstring's table: theta_i + tau theta'_i is the
+    twist at t_i + tau)."""
+    torque, twist = model.torque, model.twist
+    s_t, s_w = model.torque_noise, model.twist_noise
+    rate = -defect_directions(twist, clock)[2, 1]  # theta'(t)
+
+    def fun(q, lagged=True):
+        compliance, offset, tau = q
+        w = np.sqrt(s_t**2 + (s_w / compliance) ** 2)
+        return (torque - (twist + (tau * rate if lagged else 0.0) - offset) / compliance) / w
+
+    slope, intercept = np.polyfit(torque, twist, 1)
+    if not slope > 0:
+        return None
+    start = [slope, intercept, 0.0]
+    bounds = ([slope * 1e-6, -np.inf, -np.inf], [np.inf, np.inf, np.inf])
+    with_lag = optimize.least_squares(fun, start, bounds=bounds, x_scale="jac")
+    without = optimize.least_squares(lambda q: fun(np.append(q, 0.0), False), start[:2],
+                                     bounds=(bounds[0][:2], bounds[1][:2]), x_scale="jac")
+    return float(np.sum(with_lag.fun**2)), float(with_lag.x[2]), float(np.sum(without.fun**2))
+
+
+def _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed: bool):
+    """The fit of a loop whose opening a lag explains as well as slip does (``LoopFit``), else None.
+
+    A straight loop lagged in time is an ellipse, which a partial-slip loop imitates within the noise: when the
+    straight loop with a lag (``lag_line``) is better than the straight loop by more than ``LM_CRITICAL`` residual
+    variances and the slip fit is not better than it by the slip test's critical value, slip is not established.
+    The record corrected by that lag is fitted again; if that fit still claims slip, no friction value is given.
+    """
+    result = fitted.result
+    line = lag_line(fitted.model, clock)
+    if line is None:
+        return None
+    s_lag, tau, s_line = line
+    r, jac = data_derivatives(fitted)[:2]
+    scale2 = float(r @ r) / max(r.size - jac.shape[1], 1)
+    against = (s_lag - float(r @ r)) / scale2
+    gain = (s_line - s_lag) / scale2
+    if not (gain > LM_CRITICAL and against < result.stick_critical):
+        return None
+    torque, twist = corrected_record(record.torque, record.twist, clock, [2], [tau])
+    final = fit_prepared(torque, twist, record.reversals, record.torque_noise, record.twist_noise,
+                         list(record.warnings), record.spikes, settings).result
+    unit = "s" if timed else "samples"
+    note = (f"lag: the loop's opening is a lag of {tau:.3g} {unit} between the channels as well as it is slip (the "
+            f"straight loop with that lag is {gain:.1f} residual variances better than without; the slip fit "
+            f"improves on it by {max(against, 0.0):.1f}, below the slip test's {result.stick_critical:.1f}): the "
+            "record is corrected for the lag")
+    if final.slip_detected:
+        note += "; slip is not established and no friction value or modulus is given"
+        withheld = Estimate(None, None, (None, None), identified=False)
+        final = replace(final, friction=withheld, shear_modulus=withheld, noise_limited=True)
+    return replace(final, warnings=(*final.warnings, note))
+
+
+def _virgin_statistic(virgin, steady, start: int) -> float:
+    """LR of the virgin start on the samples from the first turning point on: the virgin fit's sum of squares there
+    against the steady fit's (the same samples, the same parameters but the first segment), in the steady fit's
+    residual variances."""
+    r_v, _, _, _, rows = data_derivatives(virgin)
+    common = float(np.sum(r_v[rows >= start] ** 2))
+    r_s, jac_s = data_derivatives(steady)[:2]
+    s_steady = float(r_s @ r_s)
+    scale2 = s_steady / max(r_s.size - jac_s.shape[1], 1)
+    return max(common - s_steady, 0.0) / scale2
+
+
 def _widened(estimate: Estimate, ratio: float) -> Estimate:
     if estimate.value is None or not ratio > 1.0:
         return estimate
@@ -184,12 +260,46 @@ def _widened(estimate: Estimate, ratio: float) -> Estimate:
 
 def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
     """The fit of ``record`` with the defects the score tests find (module docstring): a ``LoopFit``."""
+    if fitted.p is not None:  # slip claimed: is the loop's opening a lag between the channels instead?
+        lagged = _lag_instead_of_slip(fitted, clock, record, settings, fit_prepared, timed)
+        if lagged is not None:
+            return lagged
     kinds, statistics = score_statistics(fitted, clock)[:2]
-    if not kinds:
-        return fitted.result
-    sizes = np.zeros(len(kinds))
+    found = dict(zip(kinds, statistics, strict=True))
     current = fitted
-    for _ in range(STEPS):
+    start = int(record.reversals[0]) if record.reversals.size >= 2 else None
+    steady_record = None
+    if start is not None:
+        # the steady branches depend on torque differences only; the mean torque of the loop is taken out, so that
+        # the first turning point's torque (tied to the virgin curve, which a steady loop about its mean reaches at
+        # its tips) stays within the gross-slip torque whatever the zero of the torque channel
+        later = record.torque[start:]
+        mean = 0.5 * (float(np.max(later)) + float(np.min(later)))
+        steady_record = replace(record, torque=later - mean, twist=record.twist[start:],
+                                reversals=record.reversals - start, kept=record.kept[start:])
+    virgin_lr = None
+    if steady_record is not None and fitted.p is not None and 0 not in found:
+        steady_fit = fit_prepared(steady_record.torque, steady_record.twist, steady_record.reversals,
+                                  record.torque_noise, record.twist_noise, [], 0, settings, quick=True)
+        virgin_lr = _virgin_statistic(fitted, steady_fit, start)
+        lo, hi = fitted.result.friction.interval
+        to_f = 2.0 / (settings[0] * settings[1])
+        outside = steady_fit.p is not None and fitted.result.friction.value is not None and not (
+            lo <= to_f * steady_fit.p[0] <= hi)
+        if virgin_lr <= VIRGIN_CRITICAL and not (outside and virgin_lr > VIRGIN_HINT):
+            virgin_lr = None
+    if not kinds and virgin_lr is None:
+        return fitted.result
+    steady = steady_record is not None and (0 in found or virgin_lr is not None)
+    if steady:  # fitted from the first turning point on: no torque offset moves the steady branches
+        record = steady_record
+        clock = clock[start:]
+        kinds = [k for k in kinds if k != 0]
+        current = fit_prepared(record.torque, record.twist, record.reversals, record.torque_noise,
+                               record.twist_noise, list(record.warnings), record.spikes, settings, quick=True)
+        statistics = [found[k] for k in kinds]
+    sizes = np.zeros(len(kinds))
+    for _ in range(STEPS if kinds else 0):
         step, gain = _step(current, clock, kinds)[:2]
         sizes = sizes + step
         torque, twist = corrected_record(record.torque, record.twist, clock, kinds, sizes)
@@ -202,6 +312,15 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
                          list(record.warnings), record.spikes, settings)
     result = final.result
     notes = list(result.warnings)
+    if steady:
+        test = (f"score test {found[0]:.1f} > {LM_CRITICAL:.1f}" if 0 in found else
+                f"the first loading disagrees with the later branches: LR {virgin_lr:.1f}, and the friction fitted "
+                "from the first turning point on lies outside the interval with the first loading")
+        notes.append(f"torque offset or non-virgin start ({test}): the "
+                     f"record is fitted from its first turning point on (sample {start}), on the steady Masing "
+                     "branches, which neither a torque zero offset nor the history before the record moves")
+    if not kinds:
+        return replace(result, warnings=tuple(notes))
     for k, size, lm in zip(kinds, sizes, statistics, strict=True):
         name, unit, unit_untimed = KINDS[k]
         notes.append(f"{name}: {size:.3g} {unit if timed else unit_untimed} estimated (score test {lm:.1f} > "

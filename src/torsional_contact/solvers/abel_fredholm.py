@@ -94,8 +94,11 @@ from ..special.zeros import bessel_j2_zeros
 from . import interface, kernels
 from .interface import chebyshev_coefficients as _chebyshev_coefficients
 from .interface import log_gap
+from .nystrom import MAX_CHEBYSHEV, StickSystem, default_nodes, stick_system
+from .nystrom import gauss_theta as _gauss_theta
 
-__all__ = ["AbelFredholmSolution", "solve_abel_fredholm", "default_nodes", "log_gap", "MAX_NODES", "MIN_STICK_RADIUS"]
+__all__ = ["AbelFredholmSolution", "solve_abel_fredholm", "default_nodes", "log_gap", "MAX_NODES", "MIN_STICK_RADIUS",
+           "MAX_CHEBYSHEV", "StickSystem", "stick_system"]
 
 #: Cap on the Nystrom nodes; default_nodes exceeds it for b within ~8e-7 of 1 (warns).
 MAX_NODES = 512
@@ -107,49 +110,10 @@ SLIP_POINTS = 64
 CORRECTION_POINTS = 48
 #: Phase (rad) of sin(lam_N t) per 32-point Gauss panel in ``dini_amplitudes``.
 DINI_PHASE = 20.0
-#: Most Chebyshev terms of the series of G in the variable Y of (F8).
-MAX_CHEBYSHEV = 512
-#: Half-width (in ln(1 - t^2)) of the strip in which G is analytic, a safe lower bound.
-_STRIP_HALF_WIDTH = 1.3
 #: Warn when the last Chebyshev coefficients of G exceed this (absolute, f p0 units).
 RESOLUTION_TOLERANCE = 1e-10
 
-_TARGET_DIGITS = math.log(1e17)
 _CHUNK_ENTRIES = 500_000  # (lam, s) entries evaluated at once in ``dini_amplitudes``
-
-
-def default_nodes(stick_radius: float) -> int:
-    """Nystrom nodes for ~1e-14 accuracy, from the image singularity of P (see module).
-
-    In theta in [0, pi/2] the singularity nearest to the interval is at
-    theta_s = i arccosh((2 - b)/b); with the Bernstein-ellipse parameter rho of theta_s,
-    Gauss-Legendre converges like rho^(-2n).
-    """
-    b = float(stick_radius)
-    # arccosh((2 - b)/b) = 2 arcsinh(sqrt((1 - b)/b)): no overflow for tiny b
-    height = 2.0 * math.asinh(math.sqrt(1.0 - b) / math.sqrt(b)) / (math.pi / 4.0)
-    z = complex(-1.0, height)
-    root = np.sqrt(z * z - 1.0)
-    rho = max(abs(z + root), abs(z - root))
-    n = math.ceil(1.15 * _TARGET_DIGITS / (2.0 * math.log(rho))) + 6
-    return max(16, n)
-
-
-def _chebyshev_points(b: float) -> int:
-    """Chebyshev points in Y of (F8) for ~1e-16 decay of the series of G.
-
-    G is analytic in a strip |Im ln(1 - t^2)| < ~1.3 (from Re t < 1); over the interval
-    of length |ln(1 - b^2)| mapped to [-1, 1] that is a Bernstein ellipse of parameter
-    rho = eta + sqrt(1 + eta^2), eta = 2.6 / |ln(1 - b^2)|.
-    """
-    eta = 2.0 * _STRIP_HALF_WIDTH / float(-log_gap(b))
-    rho = eta + math.sqrt(1.0 + eta * eta)
-    return min(MAX_CHEBYSHEV, max(12, math.ceil(_TARGET_DIGITS / math.log(rho)) + 8))
-
-
-def _gauss_theta(n: int):
-    x, w = gauss_legendre(n)
-    return np.pi / 4.0 * (x + 1.0), np.pi / 4.0 * w
 
 
 @dataclass(frozen=True)
@@ -453,40 +417,11 @@ def solve_abel_fredholm(stick_radius: float, n_nodes: int | None = None) -> Abel
             stacklevel=2,
         )
         n = MAX_NODES
-    xi, w_xi = kernels.xi_grid(1.0 - b)
-    theta, w_theta = _gauss_theta(n)
-    t = b * np.cos(theta)
-    wt = b * np.sin(theta) * w_theta
-    sin_theta = np.sin(theta)
-    log_l = np.log1p(np.sqrt((1.0 - t) * (1.0 + t))) - np.log(b) - np.log1p(sin_theta)
-
-    # Chebyshev points of the first kind in Y of (F8) for the series of G
-    span = float(-log_gap(b))  # |ln(1 - b^2)|
-    n_cheb = _chebyshev_points(b)
-    y_cheb = np.cos(np.pi * (np.arange(n_cheb) + 0.5) / n_cheb)
-    t_cheb = np.sqrt(-np.expm1(-0.5 * (y_cheb + 1.0) * span))
-    points = np.concatenate([t, [b], t_cheb])
-    # 1 - t without the rounding of t (it sets the kernel near t + s = 2 when b ~ 1)
-    gaps = np.concatenate([(1.0 - b) + 2.0 * b * np.sin(0.5 * theta) ** 2, [1.0 - b],
-                           np.exp(-0.5 * (y_cheb + 1.0) * span) / (1.0 + t_cheb)])
-    a_t = kernels.sinh_excess_scaled(xi, points, gaps)
-    y_t = kernels.linear_scaled(xi, points)
-    ratio = w_xi * kernels.bessel_ratio_scaled(xi)
-    a_s, y_s = a_t[:n], y_t[:n]
-    p = (2.0 / np.pi) * ((a_t * ratio) @ (a_s + y_s).T + (y_t * ratio) @ a_s.T)
-    full_1, excess_1 = kernels.load_profiles(1.0, xi)
-    full_b, excess_b = kernels.load_profiles(b, xi)
-    r_side = (2.0 / np.pi) * (a_t @ (ratio * (full_1 - full_b)) + y_t @ (ratio * (excess_1 - excess_b)))
-
-    column = wt * t
-    matrix = np.eye(n) + (2.0 / np.pi) * (p[:n] / t[:, None]) * column[None, :]
-    rhs = np.column_stack([np.full(n, 2.0), -log_l - r_side[:n] / t])
-    g = np.linalg.solve(matrix, rhs)
-    edge = (2.0 / np.pi) * (p[n] * column) / b
-    g_b1 = 2.0 - edge @ g[:, 0]
-    g_b0 = -float(kernels.arcsech(b)) - r_side[n] / b - edge @ g[:, 1]
-    omega_big = -g_b0 / g_b1
-    density = omega_big * g[:, 0] + g[:, 1]
+    system = stick_system(b, n)
+    t, wt, p, r_side, column = system.nodes, system.weights, system.kernel, system.side, system.column
+    xi, w_xi, span, n_cheb, t_cheb = system.xi, system.xi_weights, system.span, system.n_cheb, system.t_cheb
+    omega_big = -system.edge_constant / system.edge_rotation
+    density = omega_big * system.density_rotation + system.density_constant
     deficit = GROSS_SLIP_TORQUE * b**3 - 16.0 / np.pi * np.sum(wt * t * t * density)
     torque = GROSS_SLIP_TORQUE - deficit
     rotation = omega_big - kernels.TORQUE_ROTATION * torque
