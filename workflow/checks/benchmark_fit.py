@@ -3,9 +3,10 @@
     .venv/bin/python workflow/checks/benchmark_fit.py [--baseline COMMIT] [--sizes 1000 100000] [--repeats 5]
 
 Each record (a twist-controlled gross-slip loop of the synthetic rig, ``fitting.synthetic``, 50 cycles
-for the long records, two for the short ones, noise 0.5 % of the torque range and 1e-5 rad; written once
-to a temporary .npy file) is fitted by ``fit_loop`` of this tree and of the baseline (a detached ``git
-worktree`` of COMMIT, default the commit this work started from, removed afterwards), each fit in a
+for the long records, two for the short ones, noise 0.5 % of the torque range and 1e-5 rad; made in each
+fitting process by the synthetic rig, the same code in both trees) is fitted by ``fit_loop`` of this tree
+and of the baseline (a detached ``git worktree`` of COMMIT, default the commit this work started from,
+removed afterwards), each fit in a
 fresh interpreter whose own CPU time (``time.process_time``, the fit alone) and peak resident memory
 (``ru_maxrss``) are measured; the median of ``--repeats`` runs, interleaved (baseline, current, ...)
 so that the machine's load falls on both alike, and the ratios current / baseline.  Also reported:
@@ -27,9 +28,14 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 CHILD = r"""
 import json, resource, sys, time, warnings
 import numpy as np
-data = np.load(sys.argv[1])
 warnings.simplefilter("ignore")
 from torsional_contact import fit_loop
+from torsional_contact.fitting.synthetic import Rig, noisy, twist_controlled
+size = int(sys.argv[1])
+rig = Rig(radius=0.005, normal_force=1000.0, friction=0.6, shear_modulus=80e9, compliance=4e-4, offset=1e-4)
+cycles = 2 if size < 10_000 else 50
+torque, twist = twist_controlled(rig, 2.5e-3, cycles=cycles, samples_per_cycle=size // cycles)
+data = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(size))
 start = time.process_time()
 fit = fit_loop(data[0], data[1], radius=0.005, normal_force=1000.0)
 cpu = time.process_time() - start
@@ -39,21 +45,9 @@ print(json.dumps({"cpu": cpu, "rss_mb": rss, "friction": fit.friction.value,
 """
 
 
-def _record(size: int, path: pathlib.Path) -> None:
-    import numpy as np
-
-    from torsional_contact.fitting.synthetic import Rig, noisy, twist_controlled
-
-    rig = Rig(radius=0.005, normal_force=1000.0, friction=0.6, shear_modulus=80e9, compliance=4e-4, offset=1e-4)
-    cycles = 2 if size < 10_000 else 50
-    torque, twist = twist_controlled(rig, 2.5e-3, cycles=cycles, samples_per_cycle=size // cycles)
-    torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(size))
-    np.save(path, np.array([torque, twist]))
-
-
-def _run(src: pathlib.Path, record: pathlib.Path, timeout: float) -> dict:
+def _run(src: pathlib.Path, size: int, timeout: float) -> dict:
     env = {"PYTHONPATH": str(src), "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"}
-    out = subprocess.run([sys.executable, "-c", CHILD, str(record)], capture_output=True, text=True, env=env,
+    out = subprocess.run([sys.executable, "-c", CHILD, str(size)], capture_output=True, text=True, env=env,
                          timeout=timeout, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -73,13 +67,11 @@ def main(argv=None) -> int:
         try:
             rows = []
             for size in args.sizes:
-                record = tmp / f"record_{size}.npy"
-                _record(size, record)
                 runs = {"baseline": [], "current": []}
                 repeats = args.repeats if size < 10_000 else max(1, args.repeats // 5)
                 for _ in range(repeats):
-                    runs["baseline"].append(_run(baseline / "src", record, args.timeout))
-                    runs["current"].append(_run(ROOT / "src", record, args.timeout))
+                    runs["baseline"].append(_run(baseline / "src", size, args.timeout))
+                    runs["current"].append(_run(ROOT / "src", size, args.timeout))
                 row = {"samples": size, "repeats": repeats}
                 for name, results in runs.items():
                     row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results),

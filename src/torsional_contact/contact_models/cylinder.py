@@ -34,7 +34,7 @@ import warnings
 
 import numpy as np
 
-from .. import validation
+from .. import asymptotics, validation
 from ..backends import DEFAULT_METHOD, METHODS
 from ..criteria import GROSS_SLIP_TORQUE, SLIP_ONSET_TORQUE
 from ..curves import monotonic_curves
@@ -236,14 +236,52 @@ class Cylinder(ContactModel):
     def skeleton_nodes(self):
         """(T*, omega_m, d omega_m / d T*) on nodes from the slip onset to spinning, exact for cubic Hermite
         interpolation to 1e-10 (the curves' Chebyshev nodes, the onset expansion): ``fitting.skeleton``."""
-        from ..fitting.skeleton import cylinder_nodes
-
-        return cylinder_nodes()
+        return _skeleton_nodes()
 
 
 @functools.lru_cache(maxsize=64)
 def _monotonic(contact: Cylinder, method: str, n_terms: int | None) -> CylinderMonotonic:
     return CylinderMonotonic(contact, method, n_terms)
+
+
+_NODES_PER_PANEL = 12
+#: Extra nodes per unit width in b (the table's panels above b = 0.26 are up to 0.24 wide).
+_NODES_PER_UNIT_RADIUS = 600
+#: Nodes with 1 - b below this take omega and omega' from the small-slip expansion (S2) of ``asymptotics``
+#: (omega = (2/3) delta^3 + (pi/16) delta^4, within 1e-16 there), where the table's omega is rounding noise.
+_ONSET_NODES = 1e-3
+
+
+@functools.lru_cache(maxsize=1)
+def _skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(T*, omega_m, d omega_m / d T*) on the fixed nodes, T* increasing from 1 to 4/3 (exclusive): 12 Chebyshev
+    points per panel of the curves table and more per unit of b, the onset from the expansion (S2)
+    (``fitting.skeleton``)."""
+    curves = monotonic_curves()
+    torque, rotation = curves.by_radius["torque"], curves.by_radius["rigid_rotation"]
+    edges = torque.edges
+    def lobatto(n):  # Chebyshev-Lobatto points on [0, 1]
+        return 0.5 * (1.0 - np.cos(np.pi * np.arange(n) / (n - 1)))
+
+    radii = np.unique(np.concatenate([
+        lo + (hi - lo) * lobatto(_NODES_PER_PANEL + int(_NODES_PER_UNIT_RADIUS * (hi - lo)))
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True)]))
+    gap = np.asarray(curves.torque_gap(radii), dtype=float)  # 4/3 - T*, accurate next to spinning
+    t = GROSS_SLIP_TORQUE - gap
+    omega = np.asarray(rotation(radii), dtype=float)
+    gap_slope = np.asarray(curves.by_radius["torque_gap"].derivative(radii), dtype=float)  # = -dT*/db > 0
+    slope = np.asarray(rotation.derivative(radii), dtype=float) / -gap_slope
+    onset = 1.0 - radii < _ONSET_NODES  # the table's omega is rounding noise (~1e-15) there: (S2)
+    delta = 1.0 - radii[onset]
+    omega[onset] = asymptotics.onset_rotation(delta)
+    slope[onset] = (2.0 * delta**2 + 0.25 * np.pi * delta**3) / gap_slope[onset]
+    closest = 1.0 - radii < asymptotics.ONSET_SCALARS  # T* from (S1), as ``solve`` does
+    t[closest] = asymptotics.onset_torque(1.0 - radii[closest])
+    order = np.argsort(-radii)  # T* and omega increase as b decreases (T* may round to 4/3 near b = 1e-6)
+    t, omega, slope = t[order], omega[order], slope[order]
+    # the slip onset T* = 1 (b = 1): omega_m = omega_m' = 0 (omega_m ~ (2/3)(pi/2)^3 (T* - 1)^3)
+    return np.concatenate([[1.0], t]), np.concatenate([[0.0], omega]), np.concatenate([[0.0], slope])
+
 
 
 #: The model object of the table ``models.MODELS``.

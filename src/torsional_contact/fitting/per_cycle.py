@@ -26,7 +26,7 @@ import numpy as np
 
 from .samples import MIN_SAMPLES
 
-__all__ = ["cycle_fits", "cycle_bounds"]
+__all__ = ["cycle_fits", "cycle_bounds", "cycles_with_progress"]
 
 
 def cycle_bounds(reversals: np.ndarray, size: int) -> list[tuple[int, int]]:
@@ -66,3 +66,14 @@ def cycle_fits(record, settings, fit_prepared, clock=None, progress=None) -> lis
         if progress is not None:
             progress(number, len(bounds))
     return out
+
+
+def cycles_with_progress(record, settings, fit_prepared, clock):
+    """``per_cycle.cycle_fits`` with a progress bar (tqdm, on a terminal) for ten cycles or more."""
+    total = len(cycle_bounds(record.reversals, record.torque.size))
+    if total < 10:
+        return cycle_fits(record, settings, fit_prepared, clock)
+    from tqdm import tqdm
+
+    with tqdm(total=total, desc="fit per cycle", unit="cycle", disable=None, leave=False) as bar:
+        return cycle_fits(record, settings, fit_prepared, clock, progress=lambda done, _: bar.update(1))

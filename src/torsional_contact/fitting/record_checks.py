@@ -49,10 +49,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 
+from .. import units
 from .samples import MIN_SAMPLES, noise_level, reversal_threshold, turning_points
 
-__all__ = ["PreparedRecord", "prepared_record", "RATIO_FLOOR", "SPIKE_LEVEL", "SIGN_LEVEL", "quantisation_step",
-           "noise_floor", "find_spikes", "loop_work", "check_sign"]
+__all__ = ["PreparedRecord", "prepared_record", "checked_time", "RATIO_FLOOR", "SPIKE_LEVEL", "SIGN_LEVEL",
+           "quantisation_step", "noise_floor", "find_spikes", "loop_work", "check_sign"]
 
 #: The smallest ratio of one channel's noise level to the other's carried through the elastic slope.
 RATIO_FLOOR = 0.01
@@ -196,3 +197,14 @@ def prepared_record(torque, twist, torque_noise: float | None = None, twist_nois
         if s_theta != raw_theta:
             reversals = turning_points(twist, reversal_threshold(twist, s_theta))
     return PreparedRecord(torque, twist, s_t, s_theta, reversals, kept, int(spikes.sum()), tuple(notes))
+
+
+def checked_time(time, n: int) -> np.ndarray:
+    """The time column (s) as floats: as many as the samples, finite and strictly increasing; else ValueError."""
+    clock = units.si_array("time", time, "time")
+    clock = np.asarray(clock, dtype=float)
+    if clock.ndim != 1 or clock.size != n:
+        raise ValueError(f"time must hold one value per sample ({n}), got shape {clock.shape}")
+    if not np.all(np.isfinite(clock)) or not np.all(np.diff(clock) > 0):
+        raise ValueError("time must be finite and strictly increasing")
+    return clock

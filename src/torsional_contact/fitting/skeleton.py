@@ -47,10 +47,6 @@ import functools
 
 import numpy as np
 
-from .. import asymptotics
-from ..criteria import GROSS_SLIP_TORQUE
-from ..curves import monotonic_curves
-
 __all__ = ["Skeleton", "skeleton_nodes", "skeleton_of", "model_nodes", "cylinder_nodes"]
 
 _NODES_PER_PANEL = 12
@@ -68,35 +64,11 @@ SEARCH_SPLIT = 1024
 SLOPE_STEP = 1e-3
 
 
-@functools.lru_cache(maxsize=1)
 def cylinder_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(T*, omega_m, d omega_m / d T*) of the cylinders on the fixed nodes, T* increasing from 1 to 4/3
-    (exclusive)."""
-    curves = monotonic_curves()
-    torque, rotation = curves.by_radius["torque"], curves.by_radius["rigid_rotation"]
-    edges = torque.edges
-    def lobatto(n):  # Chebyshev-Lobatto points on [0, 1]
-        return 0.5 * (1.0 - np.cos(np.pi * np.arange(n) / (n - 1)))
+    """(T*, omega_m, d omega_m / d T*) of the cylinders on their fixed nodes (``Cylinder.skeleton_nodes``)."""
+    from ..contact_models.cylinder import CYLINDER
 
-    radii = np.unique(np.concatenate([
-        lo + (hi - lo) * lobatto(_NODES_PER_PANEL + int(_NODES_PER_UNIT_RADIUS * (hi - lo)))
-        for lo, hi in zip(edges[:-1], edges[1:], strict=True)]))
-    gap = np.asarray(curves.torque_gap(radii), dtype=float)  # 4/3 - T*, accurate next to spinning
-    t = GROSS_SLIP_TORQUE - gap
-    omega = np.asarray(rotation(radii), dtype=float)
-    gap_slope = np.asarray(curves.by_radius["torque_gap"].derivative(radii), dtype=float)  # = -dT*/db > 0
-    slope = np.asarray(rotation.derivative(radii), dtype=float) / -gap_slope
-    onset = 1.0 - radii < _ONSET_NODES  # the table's omega is rounding noise (~1e-15) there: (S2)
-    delta = 1.0 - radii[onset]
-    omega[onset] = asymptotics.onset_rotation(delta)
-    slope[onset] = (2.0 * delta**2 + 0.25 * np.pi * delta**3) / gap_slope[onset]
-    closest = 1.0 - radii < asymptotics.ONSET_SCALARS  # T* from (S1), as ``solve`` does
-    t[closest] = asymptotics.onset_torque(1.0 - radii[closest])
-    order = np.argsort(-radii)  # T* and omega increase as b decreases (T* may round to 4/3 near b = 1e-6)
-    t, omega, slope = t[order], omega[order], slope[order]
-    # the slip onset T* = 1 (b = 1): omega_m = omega_m' = 0 (omega_m ~ (2/3)(pi/2)^3 (T* - 1)^3)
-    return np.concatenate([[1.0], t]), np.concatenate([[0.0], omega]), np.concatenate([[0.0], slope])
-
+    return CYLINDER.skeleton_nodes()
 
 def skeleton_nodes() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The default model's nodes (``cylinder_nodes``)."""

@@ -1,0 +1,132 @@
+r"""Starting points and reference loops of the loop fit (``fitting.loop_fit``, whose docstring describes them).
+
+Units: torque N m, twist rad, compliance rad / (N m).
+
+``_stick_line`` (the straight loop through every sample), ``_central_line`` (through the samples that stay in stick on
+every branch), ``_start`` (the best point of a grid of starting values), ``_stick_equivalent`` (the straight loop as a
+loop of the full model: the slip fit's second start, so that it ends no worse than the straight loop),
+``_line_foot`` (the samples' foot points on a straight loop) and ``_clipping_reference`` (the reference fit when a
+gross-slip plateau only clips the loop's tips).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy import optimize
+
+from . import profile as profiles
+from .loop_model import LoopModel
+
+__all__ = ["START_RATIOS", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE"]
+
+#: The starting grid: T_s / max|T| (0.75: a gross-slip plateau) and kappa.
+START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
+START_KAPPAS = (0.02, 0.2, 1.0)
+#: A gross-slip plateau is resolved when its samples (fitted slope below ``PLATEAU_SLOPE`` / C) at one tip (a branch
+#: and a sign of the torque) span this many noise levels hypot(s_theta, C s_T) of twist.  A plateau that clips the
+#: noisy tips of a partial-slip loop spans at most 4 (the tips' twist noise); a twist-controlled gross-slip loop
+#: (2.5e-3 rad, the noisy scenario of the coverage study: 1e-4 rad, 5 % of the torque range) more than 20 on each
+#: full branch.
+PLATEAU_RESOLVED = 8.0
+#: The plateau of the reference fit lies at least this many torque noise levels above the largest fitted torque.
+PLATEAU_CLEARANCE = 1.0
+#: Samples whose slope dT/dtheta is at least this fraction of the elastic 1/C count in ``residual_rms``.
+PLATEAU_SLOPE = 0.5
+
+
+def _stick_line(model: LoopModel):
+    """The straight loop through every sample: (C, theta_0, sum of squares, result)."""
+    torque, twist, s_t, s_theta = model.torque, model.twist, model.torque_noise, model.twist_noise
+
+    def fun(q):
+        return (torque - (twist - q[1]) / q[0]) / np.sqrt(s_t**2 + (s_theta / q[0]) ** 2)
+
+    slope, intercept = np.polyfit(torque, twist, 1)
+    slope = slope if slope > 0 else float(np.ptp(twist) / np.ptp(torque))
+    result = optimize.least_squares(fun, [slope, intercept], bounds=([slope * 1e-6, -np.inf], [np.inf, np.inf]),
+                                    x_scale="jac")
+    return result
+
+
+def _central_line(model: LoopModel, peak: float):
+    """C and theta_0 from the samples with |T| < max|T| / 2 (stick on every branch of a symmetric loop)."""
+    central = np.abs(model.torque) < 0.5 * peak
+    if np.count_nonzero(central) < 5 or np.ptp(model.torque[central]) == 0:
+        return None
+    slope, intercept = np.polyfit(model.torque[central], model.twist[central], 1)
+    return (float(slope), float(intercept)) if slope > 0 else None
+
+
+def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:
+    """Starting parameters: the best point of a grid in (T_s, kappa, line) by the first-order distances."""
+    best, best_p = math.inf, None
+    for compliance, offset in lines:
+        for ratio in START_RATIOS:
+            for kappa in START_KAPPAS:
+                p = np.concatenate([[ratio * peak, kappa, compliance, offset], reversals])
+                value = float(np.sum(model.first_order_distances(p) ** 2))
+                if value < best:
+                    best, best_p = value, p
+    return best_p
+
+
+def _stick_equivalent(model: LoopModel, line, peak: float, lower, upper, kappa_min: float) -> np.ndarray:
+    """The full model's parameters of the straight loop ``line`` (C, theta_0): the slip torque above the largest
+    torque (every sample in stick), the reversals at their samples' foot points on the line, within the bounds."""
+    compliance, offset = (float(v) for v in line)
+    foot = _line_foot(model.torque, model.twist, compliance, offset, model.torque_noise, model.twist_noise)
+    largest = max(peak, float(np.max(np.abs(foot - offset))) / compliance)
+    onset, gross = model.contact.slip_onset_torque, model.contact.gross_slip_torque
+    # a contact that slips at any torque is straight only without its twist (kappa at its bound)
+    slip_torque, kappa = (1.05 * largest / onset, START_KAPPAS[1]) if onset > 0 else (1.05 * largest / gross,
+                                                                                       kappa_min)
+    p = np.concatenate([[slip_torque, kappa, compliance, offset], foot[model.reversals]])
+    return np.clip(p, lower, upper)
+
+
+def _line_foot(torque, twist, compliance, offset, s_t, s_theta):
+    """Foot points (true twists) of the samples on the straight loop theta = theta_0 + C T."""
+    # minimise (T - (u - theta_0) / C)^2 / s_T^2 + (theta - u)^2 / s_theta^2 over u
+    a = 1.0 / (compliance**2 * s_t**2)
+    b = 1.0 / s_theta**2
+    return (a * (compliance * torque + offset) + b * twist) / (a + b)
+
+
+def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
+    """The reference fit when the fitted loop's gross-slip plateau only clips its tips, else None.
+
+    Where the twist noise hides the contact's twist, a plateau 4/3 T_s at the largest torque lets the samples at
+    the tips trade their twist residuals for the smaller distance to a flat line: a gain of about one residual
+    variance per sample within a torque noise level of the plateau (LR about 10 for the 1.3 T_s loop at 1e-4 rad),
+    which the likelihood takes for evidence of a plateau, hence of a T_s and a stiff contact (G at 250-500 GPa with
+    intervals that excluded the true 80 GPa in a quarter of the records).  A plateau whose samples span less than
+    ``PLATEAU_RESOLVED`` noise levels of twist at every tip is not seen in the data; its gain is not evidence.
+    The reference is then the best loop whose plateau lies ``PLATEAU_CLEARANCE`` torque noise levels above the
+    largest fitted torque: (p, S, Jacobian).  The intervals are taken against it (the clipped loops, below it,
+    count as LR = 0, inside every interval).
+    """
+    slip_torque, compliance = float(p[0]), float(p[2])
+    s_t, s_theta = model.torque_noise, model.twist_noise
+    foot = model.foot_points(p)
+    fitted, slope, turning = model.torque_at(p, foot)[:3]
+    tips = float(np.max(np.abs(np.append(turning, fitted))))
+    gross = model.contact.gross_slip_torque
+    if gross * slip_torque - tips > s_t:
+        return None  # the plateau is not reached
+    on_plateau = slope < PLATEAU_SLOPE / compliance
+    level = math.hypot(s_theta, compliance * s_t)
+    # one tip: a branch and a sign of the torque (a reversal missed in the noise joins two tips in one branch)
+    tip = 2 * model.segment + (fitted > 0)
+    spans = [np.ptp(foot[on_plateau & (tip == j)]) for j in np.unique(tip[on_plateau])]
+    if spans and max(spans) >= PLATEAU_RESOLVED * level:
+        return None  # a plateau the data show
+    lower_reference = np.array(lower, dtype=float)
+    lower_reference[0] = (tips + PLATEAU_CLEARANCE * s_t) / gross
+    start = np.array(p, dtype=float)
+    start[0] = lower_reference[0] * (1 + 1e-6)
+    p_ref, s_ref, result = profiles.fit(model, start, lower_reference, upper)
+    if s_ref <= s_full:
+        return None
+    return p_ref, s_ref, result.jac
