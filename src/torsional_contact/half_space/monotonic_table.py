@@ -189,6 +189,17 @@ class MonotonicTable:
         return self._pair_z(best) if gross_side else self._pair(best)
 
     # ------------------------------------------------------------------ evaluation
+    def point(self, tau: float) -> tuple[float, float, float]:
+        """(b, Omega, W) at one onset < tau < gross: ``evaluate`` in scalar arithmetic (``Piecewise.scalar``)."""
+        u = (tau - self.onset) / self.span
+        v = (self.gross - tau) / self.span
+        if u <= 0.5:
+            return self._b[0].scalar(u), self._omega[0].scalar(u), self._work[0].scalar(u)
+        if v >= self.gross_edges[1]:
+            return self._b[1].scalar(v), self._omega[1].scalar(v), self._work[1].scalar(v)
+        b, omega, work = self.evaluate(np.array([tau]))
+        return float(b[0]), float(omega[0]), float(work[0])
+
     def evaluate(self, tau):
         """(b, Omega, W) for an array onset < tau < gross (no checks; the gross-slip end by its asymptotics)."""
         tau = np.asarray(tau, dtype=float)
