@@ -64,7 +64,7 @@ def main():
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
     ]
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(6.2, 4.9), sharex=True)  # printed at its size (text width 6.3 in)
+    fig, axes = subplots(2, 2, figsize=(6.2, 4.5), sharex=True)  # printed at its size (text width 6.3 in)
     (slip_ax, trac_ax), (dslip_ax, dtrac_ax) = axes
     s_ref, q_ref = converged.slip(r), converged.traction(r)
     slip_range = (-0.08, 0.2)
@@ -97,7 +97,8 @@ def main():
     for ax, tag in zip(axes.ravel(), "abcd", strict=True):
         ax.text(0.02, 0.96, f"({tag})", transform=ax.transAxes, va="top")
     handles, labels = slip_ax.get_legend_handles_labels()
-    fig.legend(handles, labels, title=f"$b/a = {b:g}$; differences below {FLOOR:.0e} drawn at that floor",
+    floor = f"$10^{{{round(np.log10(FLOOR))}}}$"
+    fig.legend(handles, labels, title=f"$b/a = {b:g}$; differences below {floor} drawn at that floor",
                ncol=2, loc="lower center", frameon=False, fontsize=7.5, title_fontsize=8)
     fig.tight_layout(rect=(0, 0.13, 1, 1))  # the legend below the panels, off the data
     save_figure(fig, a.pdf, a.png)
