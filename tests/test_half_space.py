@@ -24,6 +24,7 @@ from torsional_contact.criteria import spinning_deficit
 from torsional_contact.half_space import closed_form as cf
 from torsional_contact.half_space import fields as hs_fields
 from torsional_contact.half_space import interface as hs_interface
+from torsional_contact.half_space.model import UNIFORM_HALF_SPACE
 from torsional_contact.histories import analyse_signal, frictional_work
 from torsional_contact.histories.energy import dissipation_from_loop_area as cylinder_loop_area
 from torsional_contact.histories.energy import dissipation_per_cycle as cylinder_dissipation
@@ -356,7 +357,7 @@ def test_small_amplitude_energy_law():
         # (W/(c A^4) - 1)/A^2 = k + O(A^2): the 40-digit reference is exact; the truncation is the next coefficient
         # of the series in psi ~ 3 pi A/32 (coefficients of the series of W in psi are below 1) times A^2
         assert_close(float(rho), k, "truncation O(A^2)", atol=a**2)
-    w = cf.dissipation_per_cycle(amplitudes)
+    w = UNIFORM_HALF_SPACE.energy_per_cycle(amplitudes)
     # the series in psi (30 terms, dominant first term) and the Newton angle (4 x its rounding, W ~ psi^4)
     assert_close(w, [float(x) for x in ref], "rounding of a 30-term series + 4 x angle rounding",
                  rtol=30 * EPS + 4 * CLOSED_FORM_ROUNDING)
@@ -539,7 +540,7 @@ def test_loop_energy_is_pi_times_the_loop_area(amplitude):
     # rule 5: sums of W_mono values (closed forms) up to the total dissipated (~800 half loops' worth): the
     # rounding of 800 additions of the total, and the closed form's rounding; the difference of two totals
     total = loop[-1].dissipated_energy
-    assert_close(energy, cf.dissipation_per_cycle(amplitude), "rounding of the sums of W_mono",
+    assert_close(energy, UNIFORM_HALF_SPACE.energy_per_cycle(amplitude), "rounding of the sums of W_mono",
                  atol=2 * (800 * EPS + CLOSED_FORM_ROUNDING) * total)
     assert_close(area, energy, "step-doubling estimate of the trapezoids", atol=estimate)
     # Gauss in psi (64 terms) for int Omega dT*; the two terms cancel to W (up to 60x at A = 0.4)
@@ -758,7 +759,8 @@ def test_apparent_friction_of_a_half_space_fit():
         # A / kappa, by a central difference), plus the rounding of W_hs (a closed form) and of the cylinders' W
         # (sums of W_mono: 64 EPS as in tests/test_history.py)
         h = 1e-4
-        up, down = cf.dissipation_per_cycle(a / k * (1 + h)), cf.dissipation_per_cycle(a / k * (1 - h))
+        up, down = (UNIFORM_HALF_SPACE.energy_per_cycle(a / k * (1 + h)),
+                    UNIFORM_HALF_SPACE.energy_per_cycle(a / k * (1 - h)))
         slope = math.log(up / down) / (math.log1p(h) - math.log1p(-h))
         assert_close(fitted, energy_per_cycle(a, "cylinder"), "Brent's xtol x slope + rounding",
                      rtol=abs(slope - 2) * 1e-14 * 2 + 2 * CLOSED_FORM_ROUNDING + 64 * EPS)
@@ -767,7 +769,7 @@ def test_apparent_friction_of_a_half_space_fit():
     assert apparent_friction_ratio(8 / 3) == 1.0
     # the uniqueness argument: the logarithmic slope of W_hs is >= 4 (its small-amplitude value)
     x = np.linspace(1e-3, 8 / 3 - 1e-6, 4000)
-    slope = np.gradient(np.log(cf.dissipation_per_cycle(x)), np.log(x))
+    slope = np.gradient(np.log(UNIFORM_HALF_SPACE.energy_per_cycle(x)), np.log(x))
     # centred differences on the grid (step h ~ 2e-3 in ln x, nonuniform): O(h^2) |d^3 ln W / d(ln x)^3| / 6, the
     # third derivative bounded by 100 (an allowance: ln W is smooth on the grid and its slope rises only near 8/3)
     assert_within(max(4 - float(np.min(slope)), 0.0), 100 * 2e-3**2 / 6, "O(h^2) of the centred differences")

@@ -128,6 +128,25 @@ def test_end_to_end_builds_every_deliverable(built):
         assert (built / "logs" / f"{name}.log").exists()
 
 
+def test_the_fit_study_writes_its_data_table_macros_and_figure(built):
+    """The rig-defect study of the test configuration: every output, the CSV's metadata, both handling modes run
+    (the fit has the switches), an inverted channel refused, the 10^5-sample scenario left out (0 replicates)."""
+    import json
+
+    data = json.loads((built / "data" / "fit_study.json").read_text())
+    rows = {(r["scenario"], r["mode"]): r for r in data["scenarios"]}
+    assert set(rows) == {("offset", "on"), ("offset", "off"), ("inverted", "on"), ("inverted", "off")}
+    assert all(r["summary"]["records"] == data["metadata"]["replicates"] for r in rows.values())
+    assert rows["inverted", "on"]["summary"]["refused"]["count"] == data["metadata"]["replicates"]
+    assert data["metadata"]["packages"]["numpy"] and len(data["window"]) == 2
+    text = (built / "data" / "fit_study.csv").read_text()
+    assert text.startswith("# method: ") and "# packages: " in text
+    assert "Clopper" in (built / "tables" / "fit_study.tex").read_text()
+    assert "res@fs-replicates" in (built / "macros" / "fit_study.tex").read_text()
+    for suffix in ("pdf", "png"):
+        assert (built / "figures" / f"fit_study.{suffix}").stat().st_size > 10_000
+
+
 def test_the_papers_and_supplement_embed_every_font_as_an_outline_font(built):
     """No font of the PDFs is a Type 3 bitmap (TeX's pk fonts, e.g. the text companion's \\textmu or \\S where
     cm-super is missing: blurred glyphs, refused by journals) and every font is embedded (read with PyMuPDF, a
@@ -299,7 +318,7 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built, rebu
          {"fig_schematic", "fig2_contours", "fig3_torque_curve", "fig4_interface", "fig_published_vs_complete",
           "fig_von_mises",
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
-          "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit",
+          "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit", "fig_fit_study",
           "fig_half_space_curves", "fig_half_space_energy",
               "paper", "supplement", "companion", "report", "all"}),
     ],
@@ -334,6 +353,8 @@ BAD_EDITS = [
     (("contours: {stick_radius: 0.5", "contours: {stick_raduis: 0.5"), "stick_raduis"),
     (("style: workflow/styles/paper.mplstyle", "style: workflow/styles/missing.mplstyle"), "no such file"),
     (("quantities: [sigma_zt, sigma_rt, u_theta]", "quantities: [sigma_zt]"), "quantities"),
+    (("  replicates: 1\n  long_replicates: 0", "  replicates: 0\n  long_replicates: 0"), "replicates"),
+    (("defects: {torque_offset: 0.1}", "defects: {torque_ofset: 0.1}"), "torque_ofset"),
 ]
 
 

@@ -32,6 +32,7 @@ _EXPORTS = {
     "DEFAULT_N_TERMS": "backends",
     "history": "histories",
     "Specimen": "specimen",
+    "HalfSpace": "half_space.pressure_model",
     "fit_loop": "fitting",
     "SLIP_ONSET_TORQUE": "criteria",
     "GROSS_SLIP_TORQUE": "criteria",

@@ -6,6 +6,9 @@ name               model
 ``cylinder``       two elastically similar flat-ended cylinders, uniform pressure (default;
                    ``contact_models.cylinder``)
 ``half-space``     two elastically similar half-spaces, uniform pressure (``half_space.model``)
+``hertz``          two elastically similar bodies, Hertzian pressure: a sphere on a flat
+                   (``half_space.pressure_model``)
+``flat-punch``     a rigid flat punch on an elastic half-space (``half_space.pressure_model``)
 =================  ===========================================================================
 
 This is the only module that compares a model's name: everything else asks the model object
@@ -21,11 +24,12 @@ from __future__ import annotations
 from .contact_models.base import ContactModel
 from .contact_models.cylinder import CYLINDER
 from .half_space.model import UNIFORM_HALF_SPACE
+from .half_space.pressure_model import FLAT_PUNCH, HERTZ
 
 __all__ = ["MODELS", "DEFAULT_MODEL", "get", "register", "unregister", "names", "validated", "ContactModel"]
 
 #: The models of the package, in the order the documents list them; the first is the default.
-_BUILT_IN = (CYLINDER, UNIFORM_HALF_SPACE)
+_BUILT_IN = (CYLINDER, UNIFORM_HALF_SPACE, HERTZ, FLAT_PUNCH)
 
 #: name -> model object: every model known by name.
 MODELS: dict[str, ContactModel] = {model.name: model for model in _BUILT_IN}

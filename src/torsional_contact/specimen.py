@@ -41,7 +41,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import models, units
+from . import models, units, validation
 from .validation import TORQUE_TOLERANCE
 
 __all__ = ["Specimen", "PhysicalState", "PhysicalSignal", "physical_record"]
@@ -99,6 +99,35 @@ class Specimen:
         if self.gauge_length is not None and not contact.shaft:
             raise ValueError(f"gauge_length does not apply to model {contact.name!r}: {contact.bodies} are not shafts "
                              "(their twist is the relative rotation of remote points; leave it out)")
+
+    @staticmethod
+    def hertz_contact_radius(sphere_radius, normal_force, youngs_modulus, poisson_ratio) -> float:
+        """Hertz's contact radius a = (3 F R / (4 E*))^(1/3) (m) of a sphere of radius R on a flat of the same material.
+
+        Two elastically similar bodies: 1/E* = (1 - nu^2)/E + (1 - nu^2)/E, E* = E / (2 (1 - nu^2)).
+        Arguments as floats in SI units, pint quantities or strings ("5 mm"); ``poisson_ratio`` in (-1, 0.5].
+        """
+        radius = units.positive_si("sphere_radius", sphere_radius, "length")
+        force = units.positive_si("normal_force", normal_force, "force")
+        modulus = units.positive_si("youngs_modulus", youngs_modulus, "pressure")
+        nu = validation.real_number("poisson_ratio", poisson_ratio, -1.0, 0.5)
+        if nu <= -1.0:
+            raise ValueError(f"poisson_ratio must lie in (-1, 0.5], got {poisson_ratio!r}")
+        effective = modulus / (2.0 * (1.0 - nu * nu))
+        return (3.0 * force * radius / (4.0 * effective)) ** (1.0 / 3.0)
+
+    @classmethod
+    def from_sphere(cls, sphere_radius, normal_force, friction, youngs_modulus, poisson_ratio) -> Specimen:
+        """A sphere of radius R pressed on a flat of the same material by F (model "hertz").
+
+        The contact radius from ``hertz_contact_radius`` (Hertz), the shear modulus mu = E / (2 (1 + nu));
+        for a measured contact radius use ``Specimen(radius=a, ..., model="hertz")`` instead.
+        """
+        nu = validation.real_number("poisson_ratio", poisson_ratio, -1.0, 0.5)
+        radius = cls.hertz_contact_radius(sphere_radius, normal_force, youngs_modulus, nu)
+        modulus = units.positive_si("youngs_modulus", youngs_modulus, "pressure")
+        return cls(radius=radius, normal_force=normal_force, friction=friction,
+                   shear_modulus=modulus / (2.0 * (1.0 + nu)), model="hertz")
 
     @property
     def contact(self):

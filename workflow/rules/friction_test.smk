@@ -115,3 +115,49 @@ rule lab_fit_macros:
     shell:
         "python {input.script} --loop {input.loop} --truth {input.truth} --json {output.json}"
         " --macros {output.macros} > {log} 2>&1"
+
+
+# The loop fit on rig records with defects (verification.fit_study): coverage with the fit's handling on and off,
+# the gross-slip window against the plateau estimator.  A full study: see README ("The loop fit on rig records").
+FIT_STUDY = config["fit_study"]
+
+
+rule fit_study:
+    input:
+        script="workflow/scripts/fit_study.py",
+        lib=lib("workflow/scripts/fit_study.py"),
+    output:
+        json=f"{OUT}/data/fit_study.json",
+        csv=f"{OUT}/data/fit_study.csv",
+        tex=f"{OUT}/tables/fit_study.tex",
+        window=f"{OUT}/tables/fit_study_window.tex",
+        macros=f"{OUT}/macros/fit_study.tex",
+    params:
+        config=json.dumps(FIT_STUDY),
+        blas=ONE_BLAS_THREAD,
+    log:
+        logfile("fit_study"),
+    resources:
+        runtime=10,
+        mem_mb=1000,
+    shell:
+        "{params.blas} python {input.script} --config '{params.config}' --json {output.json} --csv {output.csv}"
+        " --tex {output.tex} --window-tex {output.window} --macros {output.macros} > {log} 2>&1"
+
+
+rule fig_fit_study:
+    input:
+        script="workflow/scripts/fig_fit_study.py",
+        style=STYLE,
+        lib=lib("workflow/scripts/fig_fit_study.py"),
+        data=f"{OUT}/data/fit_study.json",
+    output:
+        **fig("fit_study", "fit_study"),
+    log:
+        logfile("fig_fit_study"),
+    resources:
+        runtime=2,
+        mem_mb=500,
+    shell:
+        "python {input.script} --data {input.data} --style {input.style} --pdf {output.pdf} --png {output.png}"
+        " > {log} 2>&1"

@@ -190,6 +190,7 @@ rule benchmark_histories:
         points=config["benchmark_histories"]["turning_points"],
         repeats=config["benchmark_histories"]["repeats"],
         baseline=config["benchmark_histories"]["baseline_points"],
+        models=" ".join(config["benchmark_histories"]["models"]),
     threads: 1  # one core, beside one other job (a neighbour moves the medians by about the run-to-run spread)
     priority: 100  # first: long, and it needs no other job's output
     log:
@@ -200,8 +201,8 @@ rule benchmark_histories:
     shell:
         "{params.blas} python {input.script} --samples {params.samples} --cycles {params.cycles}"
         " --walk-reversals {params.reversals} --seed {params.seed} --turning-points {params.points}"
-        " --repeats {params.repeats} --baseline-points {params.baseline} --json {output.json}"
-        " --macros {output.macros} > {log} 2>&1"
+        " --repeats {params.repeats} --baseline-points {params.baseline} --models {params.models}"
+        " --json {output.json} --macros {output.macros} > {log} 2>&1"
 
 
 rule curve_accuracy:

@@ -99,6 +99,45 @@ def summary(values) -> dict:
     return {"median": statistics.median(values), "min": min(values), "max": max(values), "runs": list(values)}
 
 
+def model_cases(names, walk, repeats: int, env, tmp) -> dict:
+    """Per contact model: CPU-s, wall-s and peak MB of ``history --signal FILE --json --model NAME`` on the walk
+    scaled to 0.9 of the model's gross-slip torque (fresh process: the model's interpolants are built inside it),
+    and the warm ``solve(torque=...)`` time (median of 200 calls at torques spread over partial slip, after one
+    call that builds the interpolants); medians of ``repeats`` interleaved runs, ratios to the cylinders'."""
+    from torsional_contact import models
+
+    names = ["cylinder", *[n for n in names if n != "cylinder"]]
+    files, runs, solves = {}, {}, {}
+    for name in names:
+        contact = models.get(name)
+        files[name] = os.path.join(tmp, f"walk_{name}.txt")
+        with open(files[name], "wb") as handle:
+            handle.write(format_columns([0.9 * contact.gross_slip_torque * walk / np.max(np.abs(walk))]))
+    for _ in range(repeats):
+        for name in names:
+            measured = run([sys.executable, "-m", "torsional_contact", "history", "--signal", files[name], "--json",
+                            "--no-progress", "--model", name], env)
+            del measured["out"]
+            runs.setdefault(name, []).append(measured)
+            contact = models.get(name)
+            torques = contact.gross_slip_torque * np.linspace(0.05, 0.95, 200)
+            contact.solve(torque=float(torques[0]))
+            elapsed = []
+            for t in torques:
+                start = time.perf_counter()
+                contact.solve(torque=float(t))
+                elapsed.append(time.perf_counter() - start)
+            solves.setdefault(name, []).append(1e3 * statistics.median(elapsed))
+    out = {}
+    for name in names:
+        cpu = statistics.median(r["cpu_s"] for r in runs[name])
+        out[name] = {"walk_signal": {key: summary([r[key] for r in runs[name]]) for key in runs[name][0]},
+                     "solve_warm_ms": summary(solves[name]),
+                     "walk_cpu_ratio_to_cylinder": cpu / statistics.median(r["cpu_s"] for r in runs["cylinder"]),
+                     "solve_ratio_to_cylinder": statistics.median(solves[name]) / statistics.median(solves["cylinder"])}
+    return out
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--samples", type=int, default=1_000_000)
@@ -110,6 +149,10 @@ def main():
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--json", required=True)
     p.add_argument("--macros")
+    p.add_argument("--models", nargs="*", required=True,
+                   help="also time each contact model (by name; the cylinders are the baseline of the ratios): the "
+                        "walk through history --signal --model, scaled to 0.9 of the model's gross-slip torque, in a "
+                        "fresh process, and a warm solve(torque=...) in this one (``model_cases``)")
     a = p.parse_args()
     from torsional_contact import histories as H
 
@@ -158,6 +201,7 @@ def main():
             M = importlib.import_module("torsional_contact.contact_models.cylinder")
             M._SOLUTIONS.clear()  # noqa: SLF001 - a cold cache for every baseline run
             M._series_point.cache_clear()  # noqa: SLF001
+        per_model = model_cases(a.models, data["walk"], a.repeats, env, tmp) if a.models else None
     cli = {case: {key: summary([r[key] for r in runs]) for key in runs[0]} for case, runs in processes.items()}
     result = {name: summary(v) for name, v in times.items()}
     result["baseline_weak_form_per_point"] = summary(baseline)
@@ -181,6 +225,12 @@ def main():
         "walk_meets_targets": walk["cpu_s"] <= TARGET_CPU_S and walk["peak_mb"] <= TARGET_PEAK_MB,
         "load_average": os.getloadavg(),
     }
+    if per_model is not None:
+        payload["models"] = per_model
+        for name, entry in per_model.items():
+            print(f"model {name}: walk {entry['walk_signal']['cpu_s']['median']:.2f} CPU-s "
+                  f"(x{entry['walk_cpu_ratio_to_cylinder']:.2f} of the cylinders), warm solve "
+                  f"{entry['solve_warm_ms']['median']:.3f} ms (x{entry['solve_ratio_to_cylinder']:.2f})")
     write_json(a.json, payload, repeats=a.repeats, cpu=os.cpu_count())
     print(f"walk ({turning['walk']} turning points): {walk['cpu_s']:.2f} CPU-s, {walk['peak_mb']:.0f} MB; "
           f"sine: {median['sine_json']['cpu_s']:.2f} CPU-s, {median['sine_json']['peak_mb']:.0f} MB; "

@@ -10,7 +10,7 @@ f_fit / f solving kappa^2 W_hs(A/kappa) = W_cyl(A) (``half_space.comparison``).
 import numpy as np
 from _plotting import figure_parser, save_figure, subplots, use_style
 
-from torsional_contact.curves import monotonic_curves
+from torsional_contact import models
 from torsional_contact.half_space import closed_form as hs
 from torsional_contact.model_comparison import apparent_friction_ratio
 
@@ -23,8 +23,8 @@ def main():
     top = 8 / 3
     ranges = np.geomspace(1e-2, top * (1 - 1e-6), a.n_points)
     above = 2 + np.geomspace(1e-4, top - 2 - 1e-6, a.n_points)
-    w_hs = hs.dissipation_per_cycle(ranges)
-    w_cyl = monotonic_curves().dissipation(above)
+    w_hs = models.get("half-space").energy_per_cycle(ranges)  # W(A) = 4 W_mono(A/2), the one Masing energy
+    w_cyl = models.get("cylinder").energy_per_cycle(above)
     use_style(a.style)
     fig, (left, right) = subplots(1, 2, figsize=(6.2, 3.0))  # printed at its size (text width 6.3 in)
     # a linear range axis: the cylinders dissipate only on 2 < A < 8/3, a quarter of it (a log axis squeezed it)

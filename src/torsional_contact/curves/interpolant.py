@@ -187,10 +187,6 @@ class MonotonicCurves:
         c = self.t_curves
         return c["stick_radius"].scalar(tau), c["rigid_rotation"].scalar(tau), c["loading_work"].scalar(tau)
 
-    def dissipation(self, torque_range):
-        """W(A) = 4 W_mono(A/2): energy dissipated per closed loop of range A (0 for A <= 2)."""
-        return 4.0 * np.asarray(self.work(0.5 * np.asarray(torque_range, dtype=float)))
-
     def rotation_integral(self, tau):
         """int_1^tau omega_m(t) dt = int_b^1 omega(c) |dT*/dc| dc (Gauss-Legendre per panel of the b table).
 

@@ -159,7 +159,6 @@ __all__ = [
     "rotation",
     "loading_work",
     "loading_work_at_radius",
-    "dissipation_per_cycle",
     "dissipation_from_loop_area",
     "compliance",
     "points",
@@ -435,12 +434,6 @@ def loading_work(tau):
     """W_mono(T*) ((f p0)^2 a^3 / mu), eq. (H11); ~ (27 pi^4/32768) T*^4 for small T*, +inf at 4/3."""
     psi, chi = angles_from_torque(tau)
     return _scalar(_work_from_angles(psi, chi), tau)
-
-
-def dissipation_per_cycle(torque_range):
-    """W(A) = 4 W_mono(A/2): energy per closed loop of torque range 0 <= A <= 8/3, eq. (H12)."""
-    a = np.asarray(torque_range, dtype=float)
-    return _scalar(4.0 * np.asarray(loading_work(0.5 * a)), torque_range)
 
 
 def dissipation_from_loop_area(torque_range, nodes: int = 64) -> float:

@@ -1,0 +1,99 @@
+"""The loop fit on rig records with defects: coverage of f with the handling on and off, and the gross-slip window.
+
+Left: per record type, the rate at which the 95 % interval (or bound) of f covers the truth, with its exact
+Clopper-Pearson interval, with the fit's handling on and off, and the rate of fits that warn.  Right: the relative
+bias of f from the loop fit and from the plateau estimator f = T_gs / (T*_gs F a / 2) against the largest T* of a
+twist-controlled record.  Reads results/data/fit_study.json (workflow/scripts/fit_study.py).
+"""
+
+import json
+
+import numpy as np
+from _plotting import figure_parser, save_figure, subplots, use_style
+from matplotlib import ticker
+
+COLOURS = {"on": "C0", "off": "C3"}
+
+
+def covered_rate(summary):
+    """(k, n, [lo, hi]) of f: intervals and bounds that cover, and refusals counted as honest."""
+    f = summary["friction"]
+    k = f["interval_coverage"]["count"] + f["bound_coverage"]["count"]
+    n = f["interval_coverage"]["trials"] + f["bound_coverage"]["trials"]
+    return k, n
+
+
+def main():
+    p = figure_parser(__doc__)
+    p.add_argument("--data", required=True)
+    a = p.parse_args()
+    data = json.loads(open(a.data, encoding="utf-8").read())
+    rows, window = data["scenarios"], data["window"]
+    names = list(dict.fromkeys(r["scenario"] for r in rows))
+    use_style(a.style)
+    fig, (cov, win) = subplots(1, 2, figsize=(7.2, 3.7), gridspec_kw={"width_ratios": [1.6, 1]})
+    from scipy.special import betaincinv
+
+    for offset, mode in ((-0.15, "on"), (0.15, "off")):
+        first = True
+        for j, name in enumerate(names):
+            row = next((r for r in rows if r["scenario"] == name and r["mode"] == mode), None)
+            if row is None or row["summary"] is None:
+                continue
+            k, n = covered_rate(row["summary"])
+            y = j + offset
+            if n:
+                lo = 0.0 if k == 0 else betaincinv(k, n - k + 1, 0.025)
+                hi = 1.0 if k == n else betaincinv(k + 1, n - k, 0.975)
+                cov.errorbar([100 * k / n], [y], xerr=[[100 * (k / n - lo)], [100 * (hi - k / n)]], fmt="o",
+                             color=COLOURS[mode], markersize=3, capsize=2, linewidth=0.8,
+                             label=f"handling {mode}" if first else None)
+                first = False
+            else:
+                refused = row["summary"]["refused"]["count"]
+                cov.text(50, y, "refused (clear error)" if refused else "no interval", fontsize=6,
+                         color=COLOURS[mode], va="center", ha="center")
+            warned = row["summary"]["warned"]
+            if warned["count"]:
+                cov.plot([103], [y], marker="^", color=COLOURS[mode], markersize=3.5)
+    cov.axvline(95, color="0.6", linewidth=0.6, linestyle="--")
+    cov.set_yticks(range(len(names)), names, fontsize=6.5)
+    cov.invert_yaxis()
+    cov.set_xlim(-5, 108)
+    cov.legend(fontsize=6, loc="upper left", bbox_to_anchor=(0.0, -0.13), ncol=2, frameon=False)
+    cov.set_xlabel("coverage of the truth by the f interval or bound [%]")
+    cov.set_title(f"{data['metadata']['replicates']} record(s) per row; triangles: the fit warned", fontsize=7)
+    tmax = np.array([w["max_torque_ratio"] for w in window])
+    amplitude = 1e3 * np.array([w["twist_amplitude"] for w in window])
+
+    def bias(entry):
+        return np.nan if entry["median_bias"] is None else 100 * entry["median_bias"]
+
+    order = np.argsort(amplitude, kind="stable")
+    win.plot(amplitude[order], [bias(window[i]["fit"]["friction"]) for i in order], "o-", markersize=3,
+             label="loop fit", color="C0")
+    win.plot(amplitude[order], [bias(window[i]["plateau"]) for i in order], "s--", markersize=3,
+             label="plateau estimator", color="C2")
+    win.plot(amplitude[order], 100 * (tmax[order] / (4 / 3) - 1), "x", color="0.4", markersize=4,
+             label=r"peak torque read as the plateau")
+    for x, t in zip(amplitude, tmax, strict=True):
+        win.annotate(f"{t:.4g}", (x, 2.0), fontsize=5.5, ha="center", va="bottom", rotation=90, color="0.3")
+    win.set_xscale("log")
+    ticks = (0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0)
+    win.set_xticks([t for t in ticks if amplitude.min() * 0.9 <= t <= amplitude.max() * 1.1])
+    win.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+    win.xaxis.set_minor_formatter(ticker.NullFormatter())
+    win.tick_params(axis="x", labelsize=6)
+    win.text(0.98, 0.6, r"vertical numbers: $\max T^*$" + "\nof the record", transform=win.transAxes, fontsize=5.5,
+             ha="right", color="0.3")
+    win.axhline(0, color="0.6", linewidth=0.6)
+    win.set_xlabel(r"twist amplitude $\theta_a$ [mrad]")
+    win.set_ylabel(r"median bias of $f$ [%]")
+    win.set_title("gross-slip window (twist control)", fontsize=7)
+    win.legend(fontsize=6)
+    fig.tight_layout()
+    save_figure(fig, a.pdf, a.png)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,209 @@
+"""The loop fit on rig records with defects (``torsional_contact.verification.fit_study``): data, table, macros.
+
+Reads the ``fit_study`` section of the configuration (JSON on the command line), runs every scenario with the fit's
+handling on and off and the gross-slip window (loop fit against the plateau estimator), and writes a JSON data
+file and a CSV (both with metadata: method, replicates, seed, package versions), the LaTeX tables (scenarios;
+window) and the macros of the text.  ``--replicates`` overrides the configuration's count (a full study run).
+Units: friction 1, G Pa, compliance rad/(N m), bias and rates in per cent in the table.
+"""
+
+import argparse
+import csv
+import io
+import json
+import time
+
+from torsional_contact.provenance import latex_escape, provenance, write_json, write_macros, write_text
+from torsional_contact.verification.fit_study import PARAMETERS, Scenario, run_study, window_study
+from torsional_contact.verification.rig_records import RigSpecimen
+
+SYMBOLS = {"friction": "f", "shear_modulus": "G", "compliance": "C"}
+
+
+def _pct(x, digits=0):
+    return "--" if x is None else f"{100 * x:.{digits}f}"
+
+
+def _kn(rate):
+    """'k/n [lo, hi]' of a rate with its Clopper-Pearson interval (per cent), '--' without trials."""
+    if not rate["trials"]:
+        return "--"
+    lo, hi = rate["interval"]
+    return f"{rate['count']}/{rate['trials']} [{100 * lo:.0f}, {100 * hi:.0f}]"
+
+
+def _bias(entry):
+    if entry["median_bias"] is None:
+        return "--"
+    b = 100 * entry["median_bias"]
+    text = f"{b:+.2g}" if abs(b) < 10 else f"{b:+.0f}"
+    if entry["median_bias_stderr"] is not None:
+        text += f" \\pm {100 * entry['median_bias_stderr']:.2g}"
+    return f"${text}$"
+
+
+def scenario_table(rows, replicates: int) -> str:
+    lines = [r"\setlength{\tabcolsep}{3pt}", r"\begin{tabular}{llrllllr}", r"\hline",
+             r"record & handling & samples & & interval coverage & bound coverage & median bias [\%] & warned \\",
+             r"\hline"]
+    for row in rows:
+        head = [latex_escape(row["scenario"]), row["mode"], str(row["samples"])]
+        if row["summary"] is None:
+            missing = ", ".join(row["not_available"]) or "no switch"
+            cell = rf"\multicolumn{{5}}{{l}}{{handling not available ({latex_escape(missing)})}}"
+            lines.append(" & ".join(head + [cell]) + r" \\")
+            continue
+        s = row["summary"]
+        for j, key in enumerate(PARAMETERS):
+            e = s[key]
+            cells = (head if j == 0 else ["", "", ""]) + [f"${SYMBOLS[key]}$", _kn(e["interval_coverage"]),
+                                                           _kn(e["bound_coverage"]), _bias(e),
+                                                           _kn(s["warned"]) if j == 0 else ""]
+            lines.append(" & ".join(cells) + r" \\")
+        if s["refused"]["count"]:
+            lines.append(rf" & & & \multicolumn{{5}}{{l}}{{refused with an error: {_kn(s['refused'])}}} \\")
+        lines.append(r"\hline")
+    lines += [r"\end{tabular}",
+              rf"\par\smallskip\footnotesize {replicates} record(s) per row: rates as $k/n$ with exact 95\,\% "
+              r"(Clopper--Pearson) intervals in per cent."]
+    return "\n".join(lines) + "\n"
+
+
+def window_table(rows) -> str:
+    lines = [r"\begin{tabular}{rllll}", r"\hline",
+             r"$\max T^*$ & loop fit: $f$ coverage & $f$ bias [\%] & $G$ identified & plateau: $f$ bias [\%] \\",
+             r"\hline"]
+    for row in rows:
+        fit = row["fit"]
+        lines.append(" & ".join([f"{row['max_torque_ratio']:.4g}", _kn(fit["friction"]["interval_coverage"]),
+                                 _bias(fit["friction"]), _kn(fit["shear_modulus"]["identified"]),
+                                 _bias(row["plateau"])]) + r" \\")
+    lines += [r"\hline", r"\end{tabular}"]
+    return "\n".join(lines) + "\n"
+
+
+def csv_text(rows, window, meta) -> str:
+    out = io.StringIO()
+    for key, value in meta.items():
+        out.write(f"# {key}: {json.dumps(value, sort_keys=True)}\n")
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["study", "record", "handling", "samples", "max_torque_ratio", "parameter", "identified",
+                     "interval_covered", "intervals", "interval_cp_low", "interval_cp_high", "bound_covered",
+                     "bounds", "median_bias", "median_bias_stderr", "warned", "named", "refused", "records",
+                     "not_available"])
+    for row in rows:
+        s = row["summary"]
+        for key in PARAMETERS:
+            if s is None:
+                writer.writerow(["defects", row["scenario"], row["mode"], row["samples"], row["max_torque_ratio"], key]
+                                + [""] * 13 + [";".join(row["not_available"]) or "no switch"])
+                continue
+            e = s[key]
+            writer.writerow(["defects", row["scenario"], row["mode"], row["samples"], row["max_torque_ratio"], key,
+                             e["identified"]["count"], e["interval_coverage"]["count"],
+                             e["interval_coverage"]["trials"], e["interval_coverage"]["interval"][0],
+                             e["interval_coverage"]["interval"][1], e["bound_coverage"]["count"],
+                             e["bound_coverage"]["trials"], e["median_bias"], e["median_bias_stderr"],
+                             s["warned"]["count"], s["named"]["count"], s["refused"]["count"], s["records"],
+                             ";".join(row["not_available"])])
+    for row in window:
+        for method, entry in (("loop fit", row["fit"]["friction"]), ("plateau", row["plateau"])):
+            cov = entry["interval_coverage"]
+            writer.writerow(["window", f"twist amplitude {row['twist_amplitude']:.4g} rad", method, "",
+                             row["max_torque_ratio"], "friction", "", cov["count"], cov["trials"], cov["interval"][0],
+                             cov["interval"][1], "", "", entry["median_bias"], entry["median_bias_stderr"],
+                             "", "", "", "", ""])
+    return out.getvalue()
+
+
+def macros(rows, window, config, replicates, long_replicates) -> dict:
+    out = {"fs-replicates": str(replicates), "fs-long-replicates": str(long_replicates),
+           "fs-friction": f"{config['specimen']['friction']:g}",
+           "fs-modulus-gpa": f"{config['specimen']['shear_modulus'] / 1e9:g}",
+           "fs-radius-mm": f"{config['specimen']['radius'] * 1e3:g}",
+           "fs-gauge-mm": f"{config['specimen']['gauge_length'] * 1e3:g}",
+           "fs-force-n": f"{config['specimen']['normal_force']:g}",
+           "fs-scenarios": str(len({r['scenario'] for r in rows})),
+           "fs-samples": str(min(r["samples"] for r in rows))}
+    for row in rows:
+        if row["summary"] is None:
+            continue
+        s, key = row["summary"], f"fs-{row['scenario']}-{row['mode']}"
+        f = s["friction"]
+        out[f"{key}-f-cov"] = (f"{f['interval_coverage']['count']}/{f['interval_coverage']['trials']}"
+                               if f["interval_coverage"]["trials"] else "--")
+        out[f"{key}-f-bias"] = _pct(f["median_bias"], 1)
+        out[f"{key}-honest"] = f"{s['honest']['count']}/{s['honest']['trials']}"
+        out[f"{key}-warned"] = f"{s['warned']['count']}/{s['warned']['trials']}"
+    honest_on = [r["summary"]["honest"] for r in rows if r["mode"] == "on" and r["summary"]]
+    out["fs-honest-on"] = str(sum(h["count"] for h in honest_on))
+    out["fs-records-on"] = str(sum(h["trials"] for h in honest_on))
+    failing = sorted({r["scenario"] for r in rows if r["mode"] == "on" and r["summary"]
+                      and r["summary"]["honest"]["count"] < r["summary"]["honest"]["trials"]})
+    out["fs-failing"] = latex_escape(", ".join(failing) if failing else "none")
+    for j, row in enumerate(window):
+        out[f"fs-window-{j}-tmax"] = f"{row['max_torque_ratio']:.3g}"
+        out[f"fs-window-{j}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)
+        out[f"fs-window-{j}-fit-bias"] = _pct(row["fit"]["friction"]["median_bias"], 1)
+    out["fs-window-count"] = str(len(window))
+    return out
+
+
+def scenarios_of(config, long_replicates: int):
+    out = []
+    for entry in config["scenarios"]:
+        entry = dict(entry)
+        long = entry.pop("long", False)
+        if long:
+            if not long_replicates:
+                continue
+            entry.update(cycles=config["long"]["cycles"], frequency=config["long"]["frequency"],
+                         sample_rate=config["long"]["sample_rate"])
+        else:
+            entry.setdefault("cycles", config["cycles"])
+            entry.setdefault("sample_rate", config["sample_rate"])
+        out.append((Scenario(**entry), long))
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--config", required=True, help="JSON: the fit_study section of the configuration")
+    parser.add_argument("--replicates", type=int, help="records per scenario and handling (default: the config's)")
+    for name in ("json", "csv", "tex", "window-tex", "macros"):
+        parser.add_argument(f"--{name}", required=True)
+    args = parser.parse_args()
+    config = json.loads(args.config)
+    replicates = config["replicates"] if args.replicates is None else args.replicates
+    if replicates < 1:
+        parser.error(f"--replicates must be >= 1, got {replicates}")
+    long_replicates = config["long_replicates"] if args.replicates is None else replicates
+    specimen = RigSpecimen(**config["specimen"])
+    started = time.process_time()
+    chosen = scenarios_of(config, long_replicates)
+    rows = []
+    short = [s for s, long in chosen if not long]
+    rows += run_study(short, replicates=replicates, seed=config["seed"], specimen=specimen,
+                      progress=lambda r: print(r["scenario"], r["mode"], json.dumps(r["summary"]["honest"]),
+                                               flush=True))  # the log
+    longs = [s for s, long in chosen if long]
+    if longs:
+        rows += run_study(longs, replicates=long_replicates, seed=config["seed"] + 1, specimen=specimen,
+                          modes=("on",))
+    window = window_study(config["window"]["levels"], config["window"]["plateau_twists"], replicates=replicates,
+                          seed=config["seed"] + 2, specimen=specimen, cycles=config["cycles"],
+                          sample_rate=config["sample_rate"])
+    print(f"fit study: {time.process_time() - started:.1f} CPU-s", flush=True)  # the log, not the data
+    meta = {"method": "fit_loop on rig records (verification.rig_records), handling on and off; plateau estimator",
+            "replicates": replicates, "long_replicates": long_replicates, "seed": config["seed"],
+            "specimen": config["specimen"]}
+    write_json(args.json, {"scenarios": rows, "window": window, "config": config}, **meta)
+    write_text(args.csv, csv_text(rows, window, provenance(**meta)))
+    write_text(args.tex, scenario_table(rows, replicates))
+    write_text(args.window_tex, window_table(window))
+    write_macros(args.macros, macros(rows, window, config, replicates, long_replicates),
+                 "workflow/scripts/fit_study.py")
+
+
+if __name__ == "__main__":
+    main()
