@@ -55,7 +55,8 @@ def test_section_and_table_numbers_come_from_the_aux_files(tmp_path):
     aux.write_text("\\relax\n\\newlabel{tab:limit}{{3}{5}{The limit problem}{table.3}{}}\n"
                    "\\newlabel{sec:series}{{3}{3}{The series}{section.3}{}}\n")
     values = build_response.labels([aux])
-    text = build_response.fill("Table {{ref:ms:tab:limit}}, section {{ref:ms:sec:series}}", values)
-    assert text == "Table 3, section 3"
+    text = build_response.fill("Table {{ref:ms:tab:limit}}, section {{ref:ms:sec:series}} (p. {{page:ms:tab:limit}})",
+                               values)
+    assert text == "Table 3, section 3 (p. 5)"
     with pytest.raises(ValueError, match="ref:ms:tab:missing"):
         build_response.fill("{{ref:ms:tab:missing}}", values)

@@ -2,7 +2,8 @@
 
 The template quotes every number as ``{{name}}``, the name of a generated macro (the same
 ``\\result{name}`` the papers print), and every section, equation, table or figure number as
-``{{ref:DOC:LABEL}}`` (DOC: ms, supplement or companion; LABEL: the LaTeX label), so the response cannot
+``{{ref:DOC:LABEL}}`` (DOC: ms, supplement or companion; LABEL: the LaTeX label; ``{{page:DOC:LABEL}}``
+its page), so the response cannot
 drift from the build: each placeholder is replaced by the macro's value from the build's macros/*.tex,
 written as plain text (``2\\times10^{-3}`` becomes ``2×10^-3``), or by the number LaTeX gave the label
 (from the document's .aux file); a placeholder the build does not define stops the script.
@@ -18,7 +19,7 @@ from torsional_contact.provenance import write_text
 MACRO = re.compile(r"^\\expandafter\\def\\csname res@([\w.-]+)\\endcsname\{(.*)\}$")
 PLACEHOLDER = re.compile(r"\{\{([\w.:-]+)\}\}")
 #: \newlabel{LABEL}{{NUMBER}{PAGE}...}: one label of a LaTeX .aux file.
-LABEL = re.compile(r"^\\newlabel\{([^}]+)\}\{\{([^}]*)\}")
+LABEL = re.compile(r"^\\newlabel\{([^}]+)\}\{\{([^}]*)\}\{([^}]*)\}")
 #: LaTeX in macro values, as plain text.
 PLAIN = [
     (re.compile(r"\\times\s*10\^\{([^}]*)\}"), r"×10^\1"),
@@ -44,13 +45,14 @@ def macros(paths):
 
 
 def labels(aux_files):
-    """{"DOC:LABEL": number} of every label in ``aux_files`` (DOC: the file's stem, e.g. ms)."""
+    """{"ref:DOC:LABEL": number, "page:DOC:LABEL": page} of every label in ``aux_files`` (DOC: the file's stem)."""
     values = {}
     for path in aux_files:
         for line in Path(path).read_text(encoding="utf-8", errors="replace").splitlines():
             match = LABEL.match(line)
             if match:
                 values[f"ref:{Path(path).stem}:{match.group(1)}"] = match.group(2)
+                values[f"page:{Path(path).stem}:{match.group(1)}"] = match.group(3)
     return values
 
 
