@@ -41,7 +41,7 @@ def main():
     kappa = np.array([apparent_friction_ratio(x) for x in fit])
     right.loglog(fit - 2, kappa)
     right.axhline(1.0, color="0.5", lw=0.8)
-    right.set_xlabel(r"$A - 2$ (cylinders' range beyond the cyclic-slip threshold)")
+    right.set_xlabel(r"$A - 2$ (beyond the cylinders' threshold)")
     right.set_ylabel(r"half-space fit $f_\mathrm{fit}/f$")
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)

@@ -58,9 +58,9 @@ def main():
          dict(color="k", lw=2.0)),
         (f"complete weak form, $N = {n}$", complete.slip, complete.traction, complete.torque,
          dict(color="C0", lw=1.2, ls=(0, (5, 2)))),
-        ("reconstructed printed scheme, closure $q(b) = 1$", *printed_scheme(b, n, "traction"),
+        ("printed scheme, closure (C1) $q(b) = 1$", *printed_scheme(b, n, "traction"),
          dict(color="C1", lw=1.3)),
-        ("reconstructed printed scheme, torque closure", *printed_scheme(b, n, "torque"),
+        ("printed scheme, closure (C3), torque", *printed_scheme(b, n, "torque"),
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
     ]
     use_style(a.style)
