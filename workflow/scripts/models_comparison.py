@@ -106,7 +106,8 @@ def main():
     ax_fit.set_xlabel(r"$A/(2T^*_\mathrm{gs})$ of the true contact")
     ax_fit.set_ylabel(r"apparent friction $f_\mathrm{fit}/f$")
     ax_fit.set_title("(d) friction from a wrong-model fit", fontsize=9)
-    ax_fit.legend(fontsize=6, loc="upper right")
+    ax_fit.set_ylim(1e-2, 2e3)
+    ax_fit.legend(fontsize=6, loc="upper left")
     save_figure(fig, a.pdf, a.png)
 
     # ------------------------------------------------------------------ data, table, macros
