@@ -342,8 +342,8 @@ def test_changing_the_style_reruns_only_figures_and_what_shows_them(built):
         rules = planned_rules(snakemake("-n"))
     finally:
         style.write_bytes(original)
-    assert "paper" in rules and all(r.startswith("fig") or r in ("models_comparison", "paper", "supplement", "companion", "response", "report", "all")
-                                    for r in rules), rules
+    shows = ("models_comparison", "paper", "supplement", "companion", "response", "report", "all")
+    assert "paper" in rules and all(r.startswith("fig") or r in shows for r in rules), rules
 
 
 #: Edits of the test configuration that the checks must reject, with what the error must name.
