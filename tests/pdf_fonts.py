@@ -4,7 +4,9 @@ PyMuPDF reports each span of text with the size it has on the page: the font siz
 every transformation above it, so a figure drawn 7.2 in wide and included at 6.3 in prints its 8-pt
 labels at 7 pt, and that is what is measured.  The rule for legibility at print size:
 
-* every span of text is at least ``minimum`` points (7 pt), except
+* every span of text is at least ``minimum`` points (7 pt: TeX's points, 1/72.27 in, the unit in which the
+  papers' fonts are set; PDF coordinates are in PostScript points, 1/72 in, in which TeX's 7-pt font
+  measures 6.974), except
 * a sub- or superscript (a span of at least ``SCRIPT_FRACTION`` of the minimum that lies next to a span
   of full size, within one line height of it): math typesetting sets scripts at 70 % of their base (TeX's
   \\scriptstyle of 10 pt is 7 pt, matplotlib's mathtext 70 %), and a script is read with its base.
@@ -18,7 +20,9 @@ from pathlib import Path
 #: A script may be this fraction of the minimum size (70 % scripts of a base at the minimum, with rounding).
 SCRIPT_FRACTION = 0.68
 #: Sizes are compared with this slack (pt): PDF coordinates carry rounding of the writer and the scaling.
-SLACK = 0.02
+SLACK = 0.01
+#: A TeX point in PostScript points (PDF units).
+TEX_POINT = 72.0 / 72.27
 
 
 @dataclass(frozen=True)
@@ -57,7 +61,8 @@ def _near(small: Span, big: Span) -> bool:
 
 
 def too_small(pdf: Path, minimum: float = 7.0) -> list[Span]:
-    """The spans of ``pdf`` below ``minimum`` points that are not scripts of a full-size neighbour."""
+    """The spans of ``pdf`` below ``minimum`` TeX points that are not scripts of a full-size neighbour."""
+    minimum *= TEX_POINT
     every = spans(pdf)
     full = [s for s in every if s.size >= minimum - SLACK]
     offenders = []

@@ -125,3 +125,37 @@ def test_readme_names_the_cli_file_rules_where_the_conventions_are():
                    "--column N|NAME", "--parents", "/dev/stdout"):
         assert phrase in conventions, phrase
     assert sys.modules["torsional_contact"] is torsional_contact
+
+
+def test_readme_front_page_is_the_two_commands_then_what_this_is_then_the_two_paths():
+    """The first code block is the two commands, exactly; then what this is (with the original paper), the lab
+    path and the library path, before any section on methods, workflow or build times; the timings live in
+    docs/build_times.md."""
+    first = code_blocks(README, "bash")[0].splitlines()
+    assert [line.split("#")[0].strip() for line in first] == ["bash workflow/main.sh", "bash workflow/test.sh"]
+    order = [README.index(h) for h in ("## What this is", "## The lab path", "## The library path", "## The methods",
+                                       "## The workflow")]
+    assert order == sorted(order), order
+    front = README[:README.index("## The methods")]
+    assert "Torsional contact between elastically similar flat-ended cylinders" in front
+    assert "benchmark_build" not in front and "| rule |" not in README  # the build's timing tables moved
+    assert (ROOT / "docs" / "build_times.md").is_file() and "docs/build_times.md" in front
+
+
+def test_readme_lists_every_notebook():
+    section = README[README.index("## Notebooks"):README.index("## Layout")]
+    for notebook in (ROOT / "notebooks").glob("*.py"):
+        assert f"{notebook.stem}.html" in section, notebook.stem
+
+
+def test_readme_examples_read_files_that_ship():
+    """Every .csv or .json file an example reads exists in the repository (files the example writes, after
+    --output, --states, --residuals or --plot, are not read)."""
+    written = ("--output", "--states", "--residuals", "--plot")
+    for block in code_blocks(README, "bash") + code_blocks(README, "python"):
+        for line in block.splitlines():
+            tokens = shlex.split(line.split("  #")[0], posix=True) if "python -m" in line else re.findall(
+                r"[\"']([\w./-]+\.(?:csv|json))[\"']", line)
+            for k, token in enumerate(tokens):
+                if re.fullmatch(r"[\w./-]+\.(csv|json)", token) and not (k and tokens[k - 1] in written):
+                    assert (ROOT / token).is_file(), f"{token} (README: {line.strip()[:80]})"

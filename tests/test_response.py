@@ -43,8 +43,20 @@ def test_the_response_template_quotes_numbers_only_through_placeholders():
     numbered part of the papers (e.g. 'Table 3', 'section 4.2', 'eq. (38)') or a list of the configuration's
     inputs in brackets or braces (the loop [0.2, 1.3], the radii {0.05, 0.1})."""
     text = (ROOT / "paper" / "response_to_referee.md").read_text()
-    text = re.sub(r"\{\{[\w.-]+\}\}|`[^`]*`", "", text)
+    text = re.sub(r"\{\{[\w.:-]+\}\}|`[^`]*`", "", text)
     numbered = r"(?i)(section|sections|table|tables|fig\.|figs\.|figure|eq\.|eqs\.|point|appendix|S)\s*\(?\d+(\.\d+)*"
     text = re.sub(numbered, "", text)
     text = re.sub(r"\[[\d., −-]+\]|\{[\d., ]+\}", "", text)
     assert not re.findall(r"\d\.\d", text), [text[m.start() - 30:m.end() + 10] for m in re.finditer(r"\d\.\d", text)]
+
+
+def test_section_and_table_numbers_come_from_the_aux_files(tmp_path):
+    aux = tmp_path / "ms.aux"
+    aux.write_text("\\relax\n\\newlabel{tab:limit}{{3}{5}{The limit problem}{table.3}{}}\n"
+                   "\\newlabel{sec:series}{{3}{3}{The series}{section.3}{}}\n")
+    values = build_response.labels([aux])
+    text = build_response.fill("Table {{ref:ms:tab:limit}}, section {{ref:ms:sec:series}} (p. {{page:ms:tab:limit}})",
+                               values)
+    assert text == "Table 3, section 3 (p. 5)"
+    with pytest.raises(ValueError, match="ref:ms:tab:missing"):
+        build_response.fill("{{ref:ms:tab:missing}}", values)

@@ -319,8 +319,8 @@ def test_deleting_outputs_rebuilds_exactly_them_and_their_dependants(built, rebu
           "fig_von_mises",
           "fig5_cyclic", "fig_hysteresis", "fig_work_precision", "fig_convergence", "fig_precision_ladder",
           "fig_lab_loops", "fig_lab_regime_map", "fig_lab_fit", "fig_fit_study",
-          "fig_half_space_curves", "fig_half_space_energy",
-              "paper", "supplement", "companion", "report", "all"}),
+          "fig_half_space_curves", "fig_half_space_energy", "models_comparison",
+              "paper", "supplement", "companion", "response", "report", "all"}),
     ],
 )
 def test_editing_a_module_reruns_exactly_the_rules_that_import_it(built, module, expected):
@@ -342,8 +342,8 @@ def test_changing_the_style_reruns_only_figures_and_what_shows_them(built):
         rules = planned_rules(snakemake("-n"))
     finally:
         style.write_bytes(original)
-    assert "paper" in rules and all(r.startswith("fig") or r in ("paper", "supplement", "companion", "report", "all")
-                                    for r in rules), rules
+    shows = ("models_comparison", "paper", "supplement", "companion", "response", "report", "all")
+    assert "paper" in rules and all(r.startswith("fig") or r in shows for r in rules), rules
 
 
 #: Edits of the test configuration that the checks must reject, with what the error must name.

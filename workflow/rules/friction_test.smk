@@ -134,6 +134,8 @@ rule fit_study:
         macros=f"{OUT}/macros/fit_study.tex",
     params:
         config=json.dumps(FIT_STUDY),
+        replicates=FIT_STUDY["replicates"],
+        long_replicates=FIT_STUDY["long_replicates"],
         blas=ONE_BLAS_THREAD,
     log:
         logfile("fit_study"),
@@ -141,7 +143,8 @@ rule fit_study:
         runtime=10,
         mem_mb=1000,
     shell:
-        "{params.blas} python {input.script} --config '{params.config}' --json {output.json} --csv {output.csv}"
+        "{params.blas} python {input.script} --config '{params.config}' --replicates {params.replicates}"
+        " --long-replicates {params.long_replicates} --json {output.json} --csv {output.csv}"
         " --tex {output.tex} --window-tex {output.window} --macros {output.macros} > {log} 2>&1"
 
 

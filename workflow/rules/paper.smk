@@ -174,15 +174,22 @@ rule response:
         lib=lib("workflow/scripts/build_response.py"),
         template=RESPONSE,
         macros=response_macros(),
+        # the documents' numbers of sections, equations, tables and figures come from their .aux files,
+        # written beside each PDF by its rule
+        pdfs=[PAPER_PDF, SUPPLEMENT_PDF, COMPANION_PDF],
     output:
         f"{OUT}/paper/response_to_referee.md",
+    params:
+        aux=[f"{OUT}/paper/build/ms.aux", f"{OUT}/paper/build-supplement/supplement.aux",
+             f"{OUT}/paper/build-companion/companion.aux"],
     log:
         logfile("response"),
     resources:
         runtime=2,
         mem_mb=500,
     shell:
-        "python {input.script} --template {input.template} --macros {input.macros} --output {output} > {log} 2>&1"
+        "python {input.script} --template {input.template} --macros {input.macros} --aux {params.aux}"
+        " --output {output} > {log} 2>&1"
 
 
 REPORT = f"{OUT}/report.html"

@@ -5,7 +5,7 @@ import os
 import platform
 from importlib import metadata
 
-from torsional_contact import asymptotics
+from torsional_contact import asymptotics, solve
 from torsional_contact.provenance import latex_escape, write_macros
 from torsional_contact.typeset import sci
 
@@ -26,6 +26,7 @@ def main():
         "n-terms": a.n_terms,
         "figure-method": METHOD_NAMES[a.method].format(n=a.n_terms),
         "contour-b": f"{a.contour_stick_radius:g}",
+        "contour-torque": f"{solve(stick_radius=a.contour_stick_radius).torque:.4f}",
         "python-version": platform.python_version(),
         **{f"version-{k}": latex_escape(v) for k, v in versions.items()},
         # where the solver switches from the Abel-Fredholm method to the expansions about the two limits

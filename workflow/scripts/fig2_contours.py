@@ -8,6 +8,7 @@ f p0), the stresses once for both stress panels.
 
 import numpy as np
 from _plotting import figure_files, figure_parser, method_options, save_figure, subplots, use_style
+from matplotlib.ticker import MaxNLocator
 
 from torsional_contact import solve
 
@@ -43,7 +44,7 @@ def main():
     use_style(a.style)
     for quantity, pdf, png in figures:
         values = fields[quantity]
-        fig, ax = subplots(figsize=(3.0, 2.8))  # printed at half the text width: fonts at nominal size
+        fig, ax = subplots(figsize=(1.86, 2.3))  # three in a row at the text width: fonts at nominal size
         levels = 21
         filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
         ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)
@@ -52,8 +53,10 @@ def main():
         ax.text((1 + a.stick_radius) / 2, 0.03 * a.z_max, "slip", color="w", ha="center", va="bottom")
         ax.set_xlabel(r"$r/a$")
         ax.set_ylabel(r"$z/a$")
-        ax.set_title(f"{LABELS[quantity]}: $b/a = {a.stick_radius:g}$, $T^* = {s.torque:.4f}$", fontsize=8)
-        fig.colorbar(filled, ax=ax, label=LABELS[quantity])
+        bar = fig.colorbar(filled, ax=ax, label=LABELS[quantity], location="top", pad=0.14, aspect=25)
+        bar.locator = MaxNLocator(4)  # legible ticks on a bar the width of a third of the text
+        bar.update_ticks()
+        ax.set_xticks([0.0, 0.5, 1.0])
         ax.grid(False)
         save_figure(fig, pdf, png)
 

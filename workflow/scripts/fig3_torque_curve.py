@@ -31,7 +31,7 @@ def main():
         rows = "".join(line for line in handle if not line.startswith("#"))
     data = np.genfromtxt(io.StringIO(rows), delimiter=",", names=True)
     use_style(a.style)
-    fig, ax = subplots(figsize=(4.4, 3.6))
+    fig, ax = subplots(figsize=(4.4, 3.3))
     ax.axvspan(4 / 3, T_RANGE[1], color="0.92", lw=0)
     ax.text(0.5 * (4 / 3 + T_RANGE[1]), 0.97, "above spinning:\nimpossible", ha="center", va="top", fontsize=8,
             color="0.35")

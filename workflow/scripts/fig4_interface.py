@@ -26,7 +26,7 @@ def main():
 
     r = np.linspace(0.0, 1.0, a.n_points)
     use_style(a.style)
-    panels = {quantity: subplots(figsize=(3.1, 2.45)) for quantity, _, _ in figures}  # half the text width
+    panels = {quantity: subplots(figsize=(3.1, 2.2)) for quantity, _, _ in figures}  # half the text width
     for b in a.stick_radii:
         s = solve(stick_radius=b, **method_options(a))
         for quantity, (_, ax) in panels.items():

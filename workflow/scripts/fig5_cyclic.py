@@ -16,7 +16,7 @@ def main():
     f5 = load_data(a.data)["fig5"]
     r = np.array(f5["radii"])
     use_style(a.style)
-    fig, ax = subplots(figsize=(5.0, 3.9))  # printed at 0.8 of the text width
+    fig, ax = subplots(figsize=(4.6, 3.4))  # printed at its size, the legend below it
     for torque, traction in zip(f5["stages"], f5["traction"], strict=True):
         style = "k-" if torque == 0 else "-"
         label = f"$T^* = {torque:g}$" + (" (residual)" if torque == 0 else "")
@@ -32,7 +32,7 @@ def main():
     ax.set_ylabel(r"$\sigma_{\theta z}(r,0)/f p_0$")
     ax.set_xlim(0, 1)
     ax.set_ylim(-1.1, 1.1)
-    ax.legend(title=f"loaded to $T^* = {f5['t_max']:g}$ ($b/a = {f5['loading_stick_radius']:.4f}$)", ncol=3,
+    ax.legend(title=f"loaded to $T^* = {f5['t_max']:g}$ ($b/a = {f5['loading_stick_radius']:.4f}$)", ncol=2,
               loc="upper center", bbox_to_anchor=(0.5, -0.17), fontsize=7.5, title_fontsize=8, frameon=False)
     fig.tight_layout()  # makes room for the legend below the axes
     save_figure(fig, a.pdf, a.png)

@@ -25,7 +25,7 @@ def main():
     a = p.parse_args()
     results = load_data(a.data)["results"]
     use_style(a.style)
-    fig, (left, right) = subplots(1, 2, figsize=(6.3, 3.9))  # printed at the text width
+    fig, (left, right) = subplots(1, 2, figsize=(6.3, 3.4))  # printed at the text width
     colors = rcParams["axes.prop_cycle"].by_key()["color"]
     for result, color in zip(results, colors, strict=False):
         b = result["stick_radius"]

@@ -31,7 +31,7 @@ def main():
     rows, window = data["scenarios"], data["window"]
     names = list(dict.fromkeys(r["scenario"] for r in rows))
     use_style(a.style)
-    fig, (cov, win) = subplots(1, 2, figsize=(7.2, 3.7), gridspec_kw={"width_ratios": [1.6, 1]})
+    fig, (cov, win) = subplots(1, 2, figsize=(6.3, 3.9), gridspec_kw={"width_ratios": [1.6, 1]})
     from scipy.special import betaincinv
 
     for offset, mode in ((-0.15, "on"), (0.15, "off")):
@@ -51,18 +51,18 @@ def main():
                 first = False
             else:
                 refused = row["summary"]["refused"]["count"]
-                cov.text(50, y, "refused (clear error)" if refused else "no interval", fontsize=6,
-                         color=COLOURS[mode], va="center", ha="center")
+                cov.text(25 if mode == "on" else 75, j, "refused: an error" if refused else "no interval",
+                         fontsize=7, color=COLOURS[mode], va="center", ha="center")
             warned = row["summary"]["warned"]
             if warned["count"]:
-                cov.plot([103], [y], marker="^", color=COLOURS[mode], markersize=3.5)
+                cov.plot([103], [y], marker="^", color=COLOURS[mode], markersize=4)
     cov.axvline(95, color="0.6", linewidth=0.6, linestyle="--")
-    cov.set_yticks(range(len(names)), names, fontsize=6.5)
-    cov.invert_yaxis()
+    cov.set_yticks(range(len(names)), names, fontsize=7)
+    cov.set_ylim(len(names) - 0.5, -0.5)  # first row on top, every row inside the axes
     cov.set_xlim(-5, 108)
-    cov.legend(fontsize=6, loc="upper left", bbox_to_anchor=(0.0, -0.13), ncol=2, frameon=False)
-    cov.set_xlabel("coverage of the truth by the f interval or bound [%]")
-    cov.set_title(f"{data['metadata']['replicates']} record(s) per row; triangles: the fit warned", fontsize=7)
+    cov.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.13), ncol=2, frameon=False)
+    cov.set_xlabel("f interval or bound covers the truth [%]")
+    cov.set_title(f"{data['metadata']['replicates']} record(s) per row;\ntriangles: the fit warned", fontsize=7)
     tmax = np.array([w["max_torque_ratio"] for w in window])
     amplitude = 1e3 * np.array([w["twist_amplitude"] for w in window])
 
@@ -75,22 +75,25 @@ def main():
     win.plot(amplitude[order], [bias(window[i]["plateau"]) for i in order], "s--", markersize=3,
              label="plateau estimator", color="C2")
     win.plot(amplitude[order], 100 * (tmax[order] / (4 / 3) - 1), "x", color="0.4", markersize=4,
-             label=r"peak torque read as the plateau")
+             label="peak torque\nas plateau")
+    low, high = win.get_ylim()
+    win.set_ylim(low, high + 0.3 * (high - low))  # room for the T* labels above the curves
     for x, t in zip(amplitude, tmax, strict=True):
-        win.annotate(f"{t:.4g}", (x, 2.0), fontsize=5.5, ha="center", va="bottom", rotation=90, color="0.3")
+        win.annotate(f"{t:.4g}", (x, 0.97), xycoords=("data", "axes fraction"), fontsize=7, ha="center", va="top",
+                     rotation=90, color="0.3")
     win.set_xscale("log")
     ticks = (0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0)
     win.set_xticks([t for t in ticks if amplitude.min() * 0.9 <= t <= amplitude.max() * 1.1])
     win.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
     win.xaxis.set_minor_formatter(ticker.NullFormatter())
-    win.tick_params(axis="x", labelsize=6)
-    win.text(0.98, 0.6, r"vertical numbers: $\max T^*$" + "\nof the record", transform=win.transAxes, fontsize=5.5,
+    win.tick_params(axis="x", labelsize=7)
+    win.text(0.98, 0.5, "vertical numbers: max T*\nof the record", transform=win.transAxes, fontsize=7,
              ha="right", color="0.3")
     win.axhline(0, color="0.6", linewidth=0.6)
-    win.set_xlabel(r"twist amplitude $\theta_a$ [mrad]")
+    win.set_xlabel("twist amplitude [mrad]")  # no sub- or superscripts: every glyph at 7 pt or more
     win.set_ylabel(r"median bias of $f$ [%]")
-    win.set_title("gross-slip window (twist control)", fontsize=7)
-    win.legend(fontsize=6)
+    win.set_title("gross-slip window\n(twist control)", fontsize=7)
+    win.legend(fontsize=7)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

@@ -33,13 +33,13 @@ def main():
     law.loglog(d["eps"], d["asymptote"], "-", label=r"$(\pi^4/3)\,\epsilon^3$")
     law.set_xlabel(r"$\epsilon = \Delta T^*/2 - 1$")
     law.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
-    law.legend(fontsize=8, loc="upper left")
+    law.legend(fontsize=8, loc="lower right")  # the data rise from lower left to upper right
     c = data["compliance"]
     compliance.semilogy(c["torque"], c["d_omega_d_torque"], "o-", label="first loading")
     compliance.semilogy(c["torque"], c["asymptote"], "--", label=r"$(\pi^3/4)(T^*-1)^2$")
     compliance.set_xlabel(r"$T^*$")
     compliance.set_ylabel(r"$d\omega/dT^*$")
-    compliance.legend(fontsize=8, loc="upper left")
+    compliance.legend(fontsize=8, loc="lower right")
     fig.legend(handles, labels, title=r"loops $[T^*_{\min}, T^*_{\max}]$", loc="lower center",
                ncol=min(len(labels), 4), fontsize=8, title_fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.22, 1, 1))  # the legend of the loops below the panels, off the data

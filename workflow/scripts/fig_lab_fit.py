@@ -34,7 +34,7 @@ def main():
     loop.set_ylabel(r"torque $T$ [N m]")
     # the fitted values and their intervals are quoted in the text (generated macros), not typed in the figure
     loop.set_title(f"fit of {torque.size} samples", fontsize=8, loc="left")
-    loop.legend(fontsize=8, loc="lower right")
+    loop.legend(fontsize=8, loc="upper left")  # above the rising branch: empty
     residual.plot(np.arange(torque.size), torque - fit.fitted_torque, ".", markersize=2, color="0.3")
     residual.axhline(0.0, color="0.6", linewidth=0.6)
     residual.set_xlabel("sample")

@@ -58,13 +58,13 @@ def main():
          dict(color="k", lw=2.0)),
         (f"complete weak form, $N = {n}$", complete.slip, complete.traction, complete.torque,
          dict(color="C0", lw=1.2, ls=(0, (5, 2)))),
-        ("reconstructed printed scheme, closure $q(b) = 1$", *printed_scheme(b, n, "traction"),
+        ("printed scheme, closure (C1) $q(b) = 1$", *printed_scheme(b, n, "traction"),
          dict(color="C1", lw=1.3)),
-        ("reconstructed printed scheme, torque closure", *printed_scheme(b, n, "torque"),
+        ("printed scheme, closure (C3), torque", *printed_scheme(b, n, "torque"),
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
     ]
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(6.2, 4.9), sharex=True)  # printed at its size (text width 6.3 in)
+    fig, axes = subplots(2, 2, figsize=(6.2, 4.5), sharex=True)  # printed at its size (text width 6.3 in)
     (slip_ax, trac_ax), (dslip_ax, dtrac_ax) = axes
     s_ref, q_ref = converged.slip(r), converged.traction(r)
     slip_range = (-0.08, 0.2)
@@ -97,7 +97,8 @@ def main():
     for ax, tag in zip(axes.ravel(), "abcd", strict=True):
         ax.text(0.02, 0.96, f"({tag})", transform=ax.transAxes, va="top")
     handles, labels = slip_ax.get_legend_handles_labels()
-    fig.legend(handles, labels, title=f"$b/a = {b:g}$; differences below {FLOOR:.0e} drawn at that floor",
+    floor = f"$10^{{{round(np.log10(FLOOR))}}}$"
+    fig.legend(handles, labels, title=f"$b/a = {b:g}$; differences below {floor} drawn at that floor",
                ncol=2, loc="lower center", frameon=False, fontsize=7.5, title_fontsize=8)
     fig.tight_layout(rect=(0, 0.13, 1, 1))  # the legend below the panels, off the data
     save_figure(fig, a.pdf, a.png)

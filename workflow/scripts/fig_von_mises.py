@@ -22,7 +22,7 @@ def main():
     normal_force = np.pi * sigma  # with a = tau_Y = 1
     tau_yield = 2 * von_mises_torque_limit(normal_force, 1.0, 1.0) / np.pi  # 2T/(pi a^3 tau_Y)
     use_style(a.style)
-    fig, ax = subplots(figsize=(4.9, 3.0))  # with the legend beside it: about 6.1 in, printed at its size
+    fig, ax = subplots(figsize=(4.9, 2.7))  # with the legend beside it: about 6.1 in, printed at its size
     ax.plot(sigma, tau_yield, "k", lw=1.8, label="von Mises onset of yield")
     for f, color in zip(a.friction, rcParams["axes.prop_cycle"].by_key()["color"], strict=False):
         ax.plot(sigma, f * sigma, color=color, label=f"slip onset $T^*=1$, $f = {f:g}$")

@@ -3,7 +3,8 @@
 Reads the ``fit_study`` section of the configuration (JSON on the command line), runs every scenario with the fit's
 handling on and off and the gross-slip window (loop fit against the plateau estimator), and writes a JSON data
 file and a CSV (both with metadata: method, replicates, seed, package versions), the LaTeX tables (scenarios;
-window) and the macros of the text.  ``--replicates`` overrides the configuration's count (a full study run).
+window) and the macros of the text.  ``--replicates`` and ``--long-replicates`` override the configuration's
+counts (a full study run).
 Units: friction 1, G Pa, compliance rad/(N m), bias and rates in per cent in the table.
 """
 
@@ -14,7 +15,7 @@ import json
 import time
 
 from torsional_contact.provenance import latex_escape, provenance, write_json, write_macros, write_text
-from torsional_contact.verification.fit_study import PARAMETERS, Scenario, run_study, window_study
+from torsional_contact.verification.fit_study import PARAMETERS, Scenario, clopper_pearson, run_study, window_study
 from torsional_contact.verification.rig_records import RigSpecimen
 
 SYMBOLS = {"friction": "f", "shear_modulus": "G", "compliance": "C"}
@@ -135,9 +136,23 @@ def macros(rows, window, config, replicates, long_replicates) -> dict:
         out[f"{key}-f-bias"] = _pct(f["median_bias"], 1)
         out[f"{key}-honest"] = f"{s['honest']['count']}/{s['honest']['trials']}"
         out[f"{key}-warned"] = f"{s['warned']['count']}/{s['warned']['trials']}"
-    honest_on = [r["summary"]["honest"] for r in rows if r["mode"] == "on" and r["summary"]]
-    out["fs-honest-on"] = str(sum(h["count"] for h in honest_on))
-    out["fs-records-on"] = str(sum(h["trials"] for h in honest_on))
+        for name in ("shear_modulus", "compliance"):
+            e = s[name]["interval_coverage"]
+            out[f"{key}-{SYMBOLS[name].lower()}-cov"] = f"{e['count']}/{e['trials']}" if e["trials"] else "--"
+            out[f"{key}-{SYMBOLS[name].lower()}-bias"] = _pct(s[name]["median_bias"], 1)
+    for mode in ("on", "off"):
+        honest = [r["summary"]["honest"] for r in rows if r["mode"] == mode and r["summary"]]
+        out[f"fs-honest-{mode}"] = str(sum(h["count"] for h in honest))
+        out[f"fs-records-{mode}"] = str(sum(h["trials"] for h in honest))
+    lo, hi = clopper_pearson(replicates, replicates)
+    out["fs-cp-all-lo"], out["fs-cp-all-hi"] = f"{100 * lo:.0f}", f"{100 * hi:.0f}"
+    clean = Scenario("clean", "torque", 1.0)  # the noise of a scenario that states none
+    out["fs-torque-noise-pct"] = f"{100 * clean.torque_noise:g}"
+    out["fs-twist-noise-urad"] = f"{1e6 * clean.twist_noise:g}"
+    out["fs-long-samples"] = str(int(round(config["long"]["cycles"] * config["long"]["sample_rate"]
+                                           / config["long"]["frequency"])))
+    out["fs-record-cycles"] = f"{config['cycles']:g}"
+    out["fs-sample-rate"] = f"{config['sample_rate']:g}"
     failing = sorted({r["scenario"] for r in rows if r["mode"] == "on" and r["summary"]
                       and r["summary"]["honest"]["count"] < r["summary"]["honest"]["trials"]})
     out["fs-failing"] = latex_escape(", ".join(failing) if failing else "none")
@@ -146,6 +161,11 @@ def macros(rows, window, config, replicates, long_replicates) -> dict:
         out[f"fs-window-{j}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)
         out[f"fs-window-{j}-fit-bias"] = _pct(row["fit"]["friction"]["median_bias"], 1)
     out["fs-window-count"] = str(len(window))
+    for tag, row in (("first", window[0]), ("last", window[-1])):
+        out[f"fs-window-{tag}-tmax"] = f"{row['max_torque_ratio']:.4g}"
+        out[f"fs-window-{tag}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)
+        out[f"fs-window-{tag}-fit-bias"] = _pct(row["fit"]["friction"]["median_bias"], 1)
+        out[f"fs-window-{tag}-twist-mrad"] = f"{1e3 * row['twist_amplitude']:.3g}"
     return out
 
 
@@ -170,6 +190,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--config", required=True, help="JSON: the fit_study section of the configuration")
     parser.add_argument("--replicates", type=int, help="records per scenario and handling (default: the config's)")
+    parser.add_argument("--long-replicates", type=int, help="10^5-sample records per long scenario (default: the "
+                        "config's)")
     for name in ("json", "csv", "tex", "window-tex", "macros"):
         parser.add_argument(f"--{name}", required=True)
     args = parser.parse_args()
@@ -177,7 +199,9 @@ def main():
     replicates = config["replicates"] if args.replicates is None else args.replicates
     if replicates < 1:
         parser.error(f"--replicates must be >= 1, got {replicates}")
-    long_replicates = config["long_replicates"] if args.replicates is None else replicates
+    long_replicates = config["long_replicates"] if args.long_replicates is None else args.long_replicates
+    if long_replicates < 0:
+        parser.error(f"--long-replicates must be >= 0, got {long_replicates}")
     specimen = RigSpecimen(**config["specimen"])
     started = time.process_time()
     chosen = scenarios_of(config, long_replicates)

@@ -78,7 +78,7 @@ def main():
 
     # ------------------------------------------------------------------ figure
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(7.2, 5.6), layout="constrained")
+    fig, axes = subplots(2, 2, figsize=(6.2, 5.2), layout="constrained")  # printed at its size (text width 6.3 in)
     (ax_twist, ax_b), (ax_energy, ax_fit) = axes
     labels = {"cylinder": "cylinders", "half-space": "half-spaces, uniform $p$", "hertz": "Hertz (sphere on flat)",
               "flat-punch": "rigid flat punch"}
@@ -91,7 +91,7 @@ def main():
     ax_twist.set_xlabel(r"relative twist $\mu\varphi/(f\bar p)$")
     ax_twist.set_ylabel(r"torque $T^* = 2T/(fFa)$")
     ax_twist.set_title("(a) monotonic loading", fontsize=9)
-    ax_twist.legend(fontsize=7, loc="lower right")
+    ax_twist.legend(fontsize=7.5, loc="lower right")
     ax_b.set_xlabel(r"$T^*/T^*_\mathrm{gs}$ (fraction of the gross-slip torque)")
     ax_b.set_ylabel(r"stick radius $b/a$")
     ax_b.set_title("(b) slip onset and spread", fontsize=9)
@@ -106,7 +106,8 @@ def main():
     ax_fit.set_xlabel(r"$A/(2T^*_\mathrm{gs})$ of the true contact")
     ax_fit.set_ylabel(r"apparent friction $f_\mathrm{fit}/f$")
     ax_fit.set_title("(d) friction from a wrong-model fit", fontsize=9)
-    ax_fit.legend(fontsize=6, loc="upper right")
+    ax_fit.set_ylim(1e-2, 2e3)
+    ax_fit.legend(fontsize=7.5, loc="upper left")
     save_figure(fig, a.pdf, a.png)
 
     # ------------------------------------------------------------------ data, table, macros

@@ -268,19 +268,29 @@ def angles_from_torque(tau):
     tau = np.clip(np.asarray(tau, dtype=float), 0.0, GROSS_SLIP_TORQUE)
     y = tau / _SCALE
     near = y > _SPLIT_X + 1.0  # x > pi/2
-    x = 0.5 * np.where(near, 0.0, y)
-    for _ in range(_NEWTON_STEPS):
-        x = x - (x + np.sin(x) - np.where(near, 0.0, y)) / (1.0 + np.cos(x))
-    gap = np.asarray(spinning_deficit(tau), dtype=float)
-    spinning = gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE  # as ``solve``: within 4 ulp of 4/3
-    d = np.where(near & ~spinning, np.maximum(gap, 0.0) / _SCALE, 0.0)
-    e = np.cbrt(6.0 * d)
-    for _ in range(_NEWTON_STEPS):
-        slope = 2.0 * np.sin(0.5 * e) ** 2
-        step = np.divide(_x_minus_sin(e) - d, slope, out=np.zeros_like(e), where=slope > 0)
-        e = e - step
-    psi = np.where(near, 0.5 * np.pi - 0.5 * e, 0.5 * x)
-    chi = np.where(near, 0.5 * e, 0.5 * np.pi - 0.5 * x)
+    psi, chi = np.empty_like(tau), np.empty_like(tau)
+    far = ~near
+    if far.any():  # each branch on its own elements only
+        yf = y[far]
+        x = 0.5 * yf
+        for _ in range(_NEWTON_STEPS):
+            step = (x + np.sin(x) - yf) / (1.0 + np.cos(x))
+            x = x - step
+            if np.all(np.abs(step) <= 1e-16 * np.abs(x)):
+                break
+        psi[far], chi[far] = 0.5 * x, 0.5 * np.pi - 0.5 * x
+    if near.any():
+        gap = np.asarray(spinning_deficit(tau[near]), dtype=float)
+        spinning = gap <= SPIN_TOLERANCE * GROSS_SLIP_TORQUE  # as ``solve``: within 4 ulp of 4/3
+        d = np.where(spinning, 0.0, np.maximum(gap, 0.0) / _SCALE)
+        e = np.cbrt(6.0 * d)
+        for _ in range(_NEWTON_STEPS):
+            slope = 2.0 * np.sin(0.5 * e) ** 2
+            step = np.divide(_x_minus_sin(e) - d, slope, out=np.zeros_like(e), where=slope > 0)
+            e = e - step
+            if np.all(np.abs(step) <= 1e-16 * np.abs(e)):
+                break
+        psi[near], chi[near] = 0.5 * np.pi - 0.5 * e, 0.5 * e
     return psi, chi
 
 

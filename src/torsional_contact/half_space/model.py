@@ -103,8 +103,8 @@ class HalfSpaceSolution(Solution):
         return self.sign * out.reshape(shape)
 
 
-def _solution(b: float, torque: float, sign: float, regime: str, tolerance: float) -> HalfSpaceSolution:
-    omega = float(closed_form.rigid_rotation(b))
+def _solution(b: float, torque: float, sign: float, regime: str, tolerance: float, omega=None) -> HalfSpaceSolution:
+    omega = float(closed_form.rigid_rotation(b)) if omega is None else omega
     backend = HalfSpaceState(stick_radius=b, torque=torque, rigid_rotation=omega)
     return HalfSpaceSolution(
         stick_radius=b, torque=sign * torque + 0.0, rigid_rotation=sign * omega + 0.0, regime=regime, method=None,
@@ -138,7 +138,8 @@ class UniformHalfSpace(ContactModel):
             return _solution(1.0, 0.0, 1.0, "stick", tolerance)
         if magnitude >= GROSS_SLIP_TORQUE * (1 - TORQUE_TOLERANCE):
             return _solution(0.0, GROSS_SLIP_TORQUE, sign, "gross-slip", tolerance)
-        return _solution(float(closed_form.stick_radius(magnitude)), magnitude, sign, "partial-slip", tolerance)
+        b, omega, _ = closed_form.state(magnitude)  # scalar arithmetic: microseconds
+        return _solution(b, magnitude, sign, "partial-slip", tolerance, omega)
 
     def monotonic_points(self, tau):
         """(H5), (H6), (H11): b, Omega_m, W_mono for an array of 0 <= tau <= 4/3."""

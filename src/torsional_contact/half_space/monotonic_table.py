@@ -3,7 +3,7 @@ r"""Interpolants of a half-space model's monotonic numbers b(tau), Omega_m(tau),
 Units as ``half_space.jaeger``: tau = T*; b in a; Omega in f p-bar / mu; W in (f p-bar)^2 a^3 / mu.
 
 Construction.  The torque interval [onset, gross] is cut into panels, geometric (ratio 2) toward
-the slip onset and (ratio sqrt 2) toward the gross-slip torque, where b ~ (gross - tau)^(1/3) and
+the slip onset and toward the gross-slip torque, where b ~ (gross - tau)^(1/3) and
 Omega, W grow like a logarithm; on each panel the three numbers are Chebyshev interpolants of
 degree ``DEGREE - 1`` at the first-kind Chebyshev nodes.  At each node the stick radius solves
 T*(b) = tau (regula falsi, Illinois variant, on the exact quadrature of ``jaeger``, bracketed by a
@@ -34,12 +34,16 @@ from ..curves.piecewise import Piecewise
 __all__ = ["MonotonicTable", "DEGREE", "GROSS_CUTOFF"]
 
 #: Chebyshev nodes per panel.
-DEGREE = 16
+DEGREE = 20
 #: Panels toward the slip onset (ratio 2: the first covers 2^-ONSET_PANELS of the range).
 ONSET_PANELS = 14
 #: Relative torque deficit below which the gross-slip asymptotics are used.
 GROSS_CUTOFF = 2.0**-40
 _ILLINOIS_STEPS = 80
+#: Secant steps (from the grid spline's inverse) before the Illinois steps.
+_SECANT_STEPS = 8
+#: |T*(b) - tau| / tau (or |d(b) - d| / d) that ends the iterations: a few roundings of the quadrature.
+_RESIDUAL = 4e-15
 _NODES = np.cos(math.pi * (np.arange(DEGREE) + 0.5) / DEGREE)[::-1]  # first-kind Chebyshev nodes, ascending
 
 
@@ -86,7 +90,7 @@ class MonotonicTable:
         self._quadrature, self._deficit = rotation_and_torque, torque_deficit
         span = self.span = self.gross - self.onset
         near_onset = _geometric_edges(0.5**ONSET_PANELS, 2.0)  # in u = (tau - onset) / span
-        near_gross = _geometric_edges(GROSS_CUTOFF, 2.0**0.5)[1:]  # in v = (gross - tau) / span
+        near_gross = _geometric_edges(GROSS_CUTOFF, 2.0)[1:]  # in v = (gross - tau) / span
         self.onset_edges, self.gross_edges = near_onset, near_gross
 
         def nodes(edges):
@@ -157,38 +161,80 @@ class MonotonicTable:
         i = np.clip(np.searchsorted(t_grid, tau) - 1, 0, grid.size - 2)
         ya, yb = grid[i], grid[i + 1]
         fa, fb = t_grid[i] - tau, t_grid[i + 1] - tau
-        # a tight bracket around the cubic-spline inverse of the grid, where it holds
-        # T* saturates in double next to gross slip: keep the strictly rising points
+        # the cubic-spline inverse of the grid narrows the bracket (T* saturates in double next to gross slip:
+        # the strictly rising points only)
         rising = np.concatenate([[True], t_grid[1:] > np.maximum.accumulate(t_grid)[:-1]])
-        guess = np.clip(CubicSpline(t_grid[rising], grid[rising])(tau), ya, yb)
-        delta = 1e-3 * (yb - ya)
-        ga, gb = np.maximum(guess - delta, ya), np.minimum(guess + delta, yb)
-        fga, fgb = function(ga) - tau, function(gb) - tau
-        tight = (fga <= 0) & (fgb >= 0)
-        ya, yb = np.where(tight, ga, ya), np.where(tight, gb, yb)
-        fa, fb = np.where(tight, fga, fa), np.where(tight, fgb, fb)
-        side = np.zeros(tau.shape, dtype=int)
-        for _ in range(_ILLINOIS_STEPS):
-            denominator = fb - fa
-            safe = np.where(denominator != 0, denominator, 1.0)
-            yc = np.where(denominator != 0, (ya * fb - yb * fa) / safe, 0.5 * (ya + yb))
-            yc = np.clip(yc, np.minimum(ya, yb), np.maximum(ya, yb))
-            fc = function(yc) - tau
-            keep_a = np.sign(fc) == np.sign(fb)  # c replaces b; a stays (halve fa if it stayed before)
-            fa = np.where(keep_a & (side == -1), 0.5 * fa, fa)
-            fb_new = np.where(keep_a, fc, fb)
-            fb_new = np.where(~keep_a & (side == 1), 0.5 * fb_new, fb_new)
-            ya, fa = np.where(keep_a, ya, yc), np.where(keep_a, fa, fc)
-            yb, fb = np.where(keep_a, yc, yb), fb_new
-            side = np.where(keep_a, -1, 1)
-            self.iterations = _ + 1
-            if np.all((np.abs(yb - ya) <= 1e-15 * np.maximum(np.abs(yb), 1e-300))
-                      | (np.abs(fc) <= 1e-15 * np.abs(tau)) | (fc == 0)):
+        spline = CubicSpline(t_grid[rising], grid[rising])
+        guess, slope = np.clip(spline(tau), ya, yb), spline(tau, 1)
+
+        def bracket(rows, y, f):  # narrow [ya, yb] with a new point
+            low = f < 0
+            ya[rows], fa[rows] = np.where(low, y, ya[rows]), np.where(low, f, fa[rows])
+            yb[rows], fb[rows] = np.where(low, yb[rows], y), np.where(low, fb[rows], f)
+
+        # secant steps from the spline's guess and a chord step with its slope dy/dtau (superlinear), kept inside
+        # the bracket; the rows left (if any) go on by Illinois steps, which cannot leave it
+        rows = np.arange(tau.size)
+        y0 = guess
+        f0 = function(y0) - tau
+        bracket(rows, y0, f0)
+        y1 = np.clip(y0 - f0 * slope, ya, yb)
+        f1 = function(y1) - tau
+        bracket(rows, y1, f1)
+        for _ in range(_SECANT_STEPS):
+            active = ~((np.abs(f1) <= _RESIDUAL * np.abs(tau))
+                       | (np.abs(y1 - y0) <= 1e-15 * np.maximum(np.abs(y1), 1e-300)))
+            rows = np.nonzero(active)[0]
+            if not rows.size:
                 break
+            d = f1[rows] - f0[rows]
+            step = np.where(d != 0, f1[rows] * (y1[rows] - y0[rows]) / np.where(d != 0, d, 1.0), 0.0)
+            y2 = np.clip(y1[rows] - step, ya[rows], yb[rows])
+            f2 = function(y2) - tau[rows]
+            bracket(rows, y2, f2)
+            y0[rows], f0[rows] = y1[rows], f1[rows]
+            y1[rows], f1[rows] = y2, f2
+        side = np.zeros(tau.shape, dtype=int)
+        active = ~((np.abs(f1) <= _RESIDUAL * np.abs(tau))
+                   | (np.abs(yb - ya) <= 1e-15 * np.maximum(np.abs(yb), 1e-300)))
+        self.iterations = 0
+        for _ in range(_ILLINOIS_STEPS):  # on the rows not yet converged only
+            rows = np.nonzero(active)[0]
+            if not rows.size:
+                break
+            self.iterations = _ + 1
+            a_y, a_f, b_y, b_f, t = ya[rows], fa[rows], yb[rows], fb[rows], tau[rows]
+            denominator = b_f - a_f
+            safe = np.where(denominator != 0, denominator, 1.0)
+            yc = np.where(denominator != 0, (a_y * b_f - b_y * a_f) / safe, 0.5 * (a_y + b_y))
+            yc = np.clip(yc, np.minimum(a_y, b_y), np.maximum(a_y, b_y))
+            fc = function(yc) - t
+            keep_a = np.sign(fc) == np.sign(b_f)  # c replaces b; a stays (halve fa if it stayed before)
+            a_f = np.where(keep_a & (side[rows] == -1), 0.5 * a_f, a_f)
+            new_b_f = np.where(keep_a, fc, b_f)
+            new_b_f = np.where(~keep_a & (side[rows] == 1), 0.5 * new_b_f, new_b_f)
+            ya[rows], fa[rows] = np.where(keep_a, a_y, yc), np.where(keep_a, a_f, fc)
+            yb[rows], fb[rows] = np.where(keep_a, yc, b_y), new_b_f
+            side[rows] = np.where(keep_a, -1, 1)
+            done = ((np.abs(yb[rows] - ya[rows]) <= 1e-15 * np.maximum(np.abs(yb[rows]), 1e-300))
+                    | (np.abs(fc) <= _RESIDUAL * np.abs(t)))
+            active[rows[done]] = False
         best = np.where(np.abs(fa) < np.abs(fb), ya, yb)
+        best = np.where(np.abs(f1) <= np.minimum(np.abs(fa), np.abs(fb)), y1, best)
         return self._pair_z(best) if gross_side else self._pair(best)
 
     # ------------------------------------------------------------------ evaluation
+    def point(self, tau: float) -> tuple[float, float, float]:
+        """(b, Omega, W) at one onset < tau < gross: ``evaluate`` in scalar arithmetic (``Piecewise.scalar``)."""
+        u = (tau - self.onset) / self.span
+        v = (self.gross - tau) / self.span
+        if u <= 0.5:
+            return self._b[0].scalar(u), self._omega[0].scalar(u), self._work[0].scalar(u)
+        if v >= self.gross_edges[1]:
+            return self._b[1].scalar(v), self._omega[1].scalar(v), self._work[1].scalar(v)
+        b, omega, work = self.evaluate(np.array([tau]))
+        return float(b[0]), float(omega[0]), float(work[0])
+
     def evaluate(self, tau):
         """(b, Omega, W) for an array onset < tau < gross (no checks; the gross-slip end by its asymptotics)."""
         tau = np.asarray(tau, dtype=float)

@@ -297,8 +297,8 @@ class HalfSpace(ContactModel):
         if magnitude <= self.slip_onset_torque:
             return self._state(1.0, magnitude, 3.0 * math.pi * magnitude / 32.0, sign,
                                "stick", tolerance)
-        b, omega, _ = self.monotonic_points(np.array([magnitude]))
-        return self._state(float(b[0]), magnitude, float(omega[0]), sign, "partial-slip", tolerance)
+        b, omega, _ = self.table.point(magnitude)
+        return self._state(b, magnitude, omega, sign, "partial-slip", tolerance)
 
     def monotonic_points(self, tau):
         """b, Omega_m, W_mono for an array 0 <= tau <= gross-slip torque (the interpolants; bonded below onset)."""
