@@ -58,7 +58,7 @@ def main():
                 cov.plot([103], [y], marker="^", color=COLOURS[mode], markersize=4)
     cov.axvline(95, color="0.6", linewidth=0.6, linestyle="--")
     cov.set_yticks(range(len(names)), names, fontsize=7)
-    cov.invert_yaxis()
+    cov.set_ylim(len(names) - 0.5, -0.5)  # first row on top, every row inside the axes
     cov.set_xlim(-5, 108)
     cov.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.13), ncol=2, frameon=False)
     cov.set_xlabel("f interval or bound covers the truth [%]")
@@ -76,18 +76,21 @@ def main():
              label="plateau estimator", color="C2")
     win.plot(amplitude[order], 100 * (tmax[order] / (4 / 3) - 1), "x", color="0.4", markersize=4,
              label="peak torque\nas plateau")
+    low, high = win.get_ylim()
+    win.set_ylim(low, high + 0.3 * (high - low))  # room for the T* labels above the curves
     for x, t in zip(amplitude, tmax, strict=True):
-        win.annotate(f"{t:.4g}", (x, 2.0), fontsize=7, ha="center", va="bottom", rotation=90, color="0.3")
+        win.annotate(f"{t:.4g}", (x, 0.97), xycoords=("data", "axes fraction"), fontsize=7, ha="center", va="top",
+                     rotation=90, color="0.3")
     win.set_xscale("log")
     ticks = (0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0)
     win.set_xticks([t for t in ticks if amplitude.min() * 0.9 <= t <= amplitude.max() * 1.1])
     win.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
     win.xaxis.set_minor_formatter(ticker.NullFormatter())
     win.tick_params(axis="x", labelsize=7)
-    win.text(0.98, 0.6, r"vertical numbers: $\max T^*$" + "\nof the record", transform=win.transAxes, fontsize=7,
+    win.text(0.98, 0.5, "vertical numbers: max T*\nof the record", transform=win.transAxes, fontsize=7,
              ha="right", color="0.3")
     win.axhline(0, color="0.6", linewidth=0.6)
-    win.set_xlabel(r"twist amplitude $\theta_a$ [mrad]")
+    win.set_xlabel("twist amplitude [mrad]")  # no sub- or superscripts: every glyph at 7 pt or more
     win.set_ylabel(r"median bias of $f$ [%]")
     win.set_title("gross-slip window\n(twist control)", fontsize=7)
     win.legend(fontsize=7)
