@@ -78,7 +78,7 @@ def main():
 
     # ------------------------------------------------------------------ figure
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(6.2, 5.2), layout="constrained")  # printed at its size (text width 6.3 in)
+    fig, axes = subplots(2, 2, figsize=(6.1, 5.2), layout="constrained")  # printed at its size (text width 6.3 in)
     (ax_twist, ax_b), (ax_energy, ax_fit) = axes
     labels = {"cylinder": "cylinders", "half-space": "half-spaces, uniform $p$", "hertz": "Hertz (sphere on flat)",
               "flat-punch": "rigid flat punch"}
