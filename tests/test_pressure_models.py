@@ -24,7 +24,11 @@ from torsional_contact import Specimen, models
 from torsional_contact.half_space import closed_form, elliptic
 from torsional_contact.half_space.pressure_model import FLAT_PUNCH, HERTZ
 
-mp.mp.dps = 25
+
+@pytest.fixture(autouse=True)
+def _mpmath_digits():
+    """25 digits for this module's mpmath references (the shared fixture in conftest restores the precision)."""
+    mp.mp.dps = 25
 
 #: The quadrature of ``jaeger`` for pressures that are analytic after the theta substitution: ~300 terms of O(1),
 #: each to a few EPS: 1e-14 (45 EPS) for rotations, torques and tractions (O(1) numbers).

@@ -39,6 +39,25 @@ LAB_LOOP = "notebooks/data/lab_loop.csv"
 LAB_TRUTH = "notebooks/data/lab_loop.json"
 
 
+# The European export of the same record (semicolons, decimal commas, metadata lines, the rig's own column
+# names) that the README reads: rebuilt from the committed record, so that the committed copy
+# notebooks/data/lab_export.csv can be compared with what the script writes (tests/test_lab_files.py does).
+rule lab_export:
+    input:
+        script="workflow/scripts/make_lab_export.py",
+        lib=lib("workflow/scripts/make_lab_export.py"),
+        source=LAB_LOOP,
+    output:
+        csv=f"{OUT}/data/lab_export.csv",
+    log:
+        logfile("lab_export"),
+    resources:
+        runtime=1,
+        mem_mb=200,
+    shell:
+        "python {input.script} --source {input.source} --csv {output.csv} > {log} 2>&1"
+
+
 rule fig_lab_loops:
     input:
         script="workflow/scripts/fig_lab_loops.py",
