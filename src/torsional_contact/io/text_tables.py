@@ -45,6 +45,9 @@ DELIMITER_NAMES = {",": "comma", ";": "semicolon", "\t": "tab", " ": "blanks"}
 
 _NUMBER = re.compile(NUMBER)
 _NOT_FINITE = {"nan", "+nan", "-nan", "inf", "+inf", "-inf", "infinity", "+infinity", "-infinity"}
+#: A whole column, one field per line, every field a number (``_number`` of each is not None).
+_FIELD_NUMBER = rf"(?:{NUMBER}|(?i:[+-]?(?:nan|inf|infinity)))"
+_NUMBER_COLUMN = re.compile(rf"{_FIELD_NUMBER}(?:\n{_FIELD_NUMBER})*")
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 #: A header field under blanks: a name with its unit in brackets ("torque [N m]") stays one field.
 _BLANK_HEADER_FIELD = re.compile(r"[^\s\[(]+(?:\s*(?:\[[^\]]*\]|\([^)]*\)))?|\[[^\]]*\]|\([^)]*\)")
@@ -99,8 +102,17 @@ class TextTable:
         """Field ``j`` (from 0) of every row as floats; ValueError naming the line and column ``name`` for a field
         that is not a number (a number with the table's decimal mark; nan and inf are read, for the caller to
         refuse)."""
-        out = np.empty(len(self.rows))
         comma = self.decimal_mark == ","
+        text = "\n".join(fields[j] for _, fields in self.rows)
+        # under a decimal comma a point is refused (the loop below names the field); a field with two commas
+        # stays no number after the replacement and goes to the loop too
+        readable = not (comma and "." in text)
+        if comma and readable:
+            text = text.replace(",", ".")
+        if readable and _NUMBER_COLUMN.fullmatch(text):
+            # every field a number (one pattern over the whole column): float() of each, as _number gives
+            return np.fromiter(map(float, text.split("\n")), dtype=float, count=len(self.rows))
+        out = np.empty(len(self.rows))
         for i, (line, fields) in enumerate(self.rows):
             value = _number(fields[j], comma)
             if value is None:
@@ -179,22 +191,49 @@ def _numeric(fields: list[str] | None, delimiter: str) -> bool:
         delimiter != "," and all(_number(f, True) is not None for f in fields))
 
 
+def _line_pattern(delimiter: str, comma: bool) -> str:
+    """A line whose every field (split at ``delimiter``, stripped) is a number: ``_number(field, comma)`` of each is
+    not None.  One pattern per line instead of a split and a test per field (exact for lines without quotes; the
+    blanks exclude the line break, so that the pattern applies line by line to the joined lines)."""
+    number = NUMBER.replace(r"\.", ",") if comma else NUMBER
+    field = rf"(?:{number}|(?i:[+-]?(?:nan|inf|infinity)))"
+    if delimiter == " ":
+        return rf"[^\S\n]*{field}(?:[^\S\n]+{field})*[^\S\n]*"
+    blank = r"[^\S\t\n]*" if delimiter == "\t" else r"[^\S\n]*"  # blanks around a field, never its separator
+    return rf"{blank}{field}{blank}(?:{re.escape(delimiter)}{blank}{field}{blank})*"
+
+
+#: Per separator: the lines of numbers (decimal points, or decimal commas unless the separator is a comma).
+_NUMERIC_LINES = {delimiter: re.compile("^(?:" + "|".join(_line_pattern(delimiter, comma) for comma in (False, True)
+                                                       if not (comma and delimiter == ",")) + ")$", re.MULTILINE)
+                  for delimiter in DELIMITERS}
+
+
+def _numeric_lines(content: list[tuple[int, str]], delimiter: str):
+    """Indices in ``content`` of the lines whose fields are all numbers (``_numeric``), in order."""
+    lines = [line for _, line in content]
+    if delimiter != " " and any('"' in line for line in lines):  # quoted fields: csv's reading, line by line
+        yield from (index for index, line in enumerate(lines) if _numeric(_fields(line, delimiter), delimiter))
+        return
+    starts = np.cumsum([0] + [len(line) + 1 for line in lines[:-1]])
+    for match in _NUMERIC_LINES[delimiter].finditer("\n".join(lines)):
+        yield int(np.searchsorted(starts, match.start(), side="right")) - 1
+
+
 def _layout(content: list[tuple[int, str]], delimiter: str):
     """(index in ``content`` of the first data line, number of fields) under ``delimiter``, or None.
 
     The data start at the first line of numbers whose field count the line above it (the header) shares, or at
     the first content line when it holds numbers already (no header)."""
-    previous = None
-    for index, (_, line) in enumerate(content):
-        fields = _fields(line, delimiter)
-        if _numeric(fields, delimiter):
-            if index == 0:
-                return 0, len(fields)
-            if previous is not None and len(previous) == len(fields):
-                return index, len(fields)
-            if len(fields) > 1:  # numbers under a line that is no header for them: this is not the separator
-                return None
-        previous = _fields(line, delimiter, header=True)
+    for index in _numeric_lines(content, delimiter):
+        fields = _fields(content[index][1], delimiter)
+        if index == 0:
+            return 0, len(fields)
+        previous = _fields(content[index - 1][1], delimiter, header=True)
+        if previous is not None and len(previous) == len(fields):
+            return index, len(fields)
+        if len(fields) > 1:  # numbers under a line that is no header for them: this is not the separator
+            return None
     return None
 
 
@@ -245,8 +284,10 @@ def read_text_table(path, *, label: str | None = None, encoding: str | None = No
     header = _fields(content[start - 1][1], delimiter, header=True) if start > 0 else None
     rows = []
     comma_seen = False
+    # without quotes a line is its fields split at the separator (what csv.reader would give, ~10x faster)
+    plain = delimiter != " " and not any('"' in line for _, line in content[start:])
     for n, line in content[start:]:
-        fields = _fields(line, delimiter)
+        fields = [field.strip() for field in line.split(delimiter)] if plain else _fields(line, delimiter)
         if fields is None or len(fields) != count:
             got = "an unbalanced quote" if fields is None else f"{len(fields)} field(s)"
             raise ValueError(f"{label} line {n}: {got}, the {'header' if header else 'first line'} has {count} "
