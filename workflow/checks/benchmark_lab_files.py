@@ -3,8 +3,8 @@
     .venv/bin/python workflow/checks/benchmark_lab_files.py [--baseline COMMIT] [--rows 1000 100000] [--repeats 5]
 
 The export is what a European rig writes: metadata lines above the header, ``;`` separators, decimal
-commas, three columns (time, torque, twist), written once per size by this script (plain Python, not
-the library) into a temporary directory and read by ``read_text_table`` plus ``TextTable.column`` of
+commas, three columns (time, torque, twist), written once per size by this script (plain Python, through
+the library's writer) into a temporary directory and read by ``read_text_table`` plus ``TextTable.column`` of
 every column, in this tree and in the baseline (a detached ``git worktree`` of COMMIT, removed
 afterwards), each read in a fresh interpreter whose own CPU time (``time.process_time``, the read
 alone) is measured; the median of ``--repeats`` runs, interleaved (baseline, current, ...) so that
@@ -22,6 +22,8 @@ import statistics
 import subprocess
 import sys
 import tempfile
+
+from torsional_contact.provenance import write_text
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -45,7 +47,7 @@ def write_export(path: pathlib.Path, rows: int) -> None:
         t = i * 1e-3
         lines.append(f"{t:.3f};{3.0 * math.sin(2 * math.pi * t):.6f};{2.5e-3 * math.sin(2 * math.pi * t):.6e}"
                      .replace(".", ","))
-    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    write_text(path, "\n".join(lines) + "\n")
 
 
 def _run(src: pathlib.Path, export: pathlib.Path) -> dict:

@@ -108,17 +108,10 @@ def _is_number(field: bytes) -> bool:
 
 
 def _read_text(label: str, path: str, column=None, model=None) -> np.ndarray:
-    from .text_tables import _binary_kind
+    from .text_tables import read_text_bytes
 
-    try:
-        with open(path, "rb") as handle:
-            data = handle.read()
-    except OSError as exc:
-        raise ValueError(f"{label}: cannot read ({exc.strerror})") from None
-    kind = _binary_kind(data)
-    if kind is not None:
-        raise ValueError(f"{label}: {kind}, not a text file of T* samples (a .npy array is read by its extension; "
-                         f"{_EXPECTED})")
+    data = read_text_bytes(path, label, "not a text file of T* samples (a .npy array is read by its extension; "
+                                        f"{_EXPECTED})")
     lines = data.removeprefix(b"\xef\xbb\xbf").split(b"\n")  # a UTF-8 byte-order mark is no part of a sample
     if lines and not lines[-1].strip():
         lines.pop()

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..units import NUMBER, shown_text
 
-__all__ = ["TextTable", "read_text_table", "DELIMITERS", "DELIMITER_NAMES"]
+__all__ = ["TextTable", "read_text_table", "read_text_bytes", "DELIMITERS", "DELIMITER_NAMES"]
 
 #: The separators tried, in the order that breaks ties (" " stands for any run of blanks).
 DELIMITERS = (",", ";", "\t", " ")
@@ -132,6 +132,23 @@ def _number(text: str, comma: bool) -> float | None:
     if _NUMBER.fullmatch(text) or text.lower() in _NOT_FINITE:
         return float(text)
     return None
+
+
+def read_text_bytes(path: str, label: str, not_text: str) -> bytes:
+    """The bytes of the file ``path``; ValueError naming ``label`` when it cannot be read or is binary (then
+    ``label: <what it is>, <not_text>``)."""
+    if "\0" in path:
+        shown = label.replace("\0", "\\0")
+        raise ValueError(f"{shown}: cannot read (the path contains a NUL character)")
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError as exc:
+        raise ValueError(f"{label}: cannot read ({exc.strerror or exc})") from None
+    kind = _binary_kind(data)
+    if kind is not None:
+        raise ValueError(f"{label}: {kind}, {not_text}")
+    return data
 
 
 def _binary_kind(data: bytes) -> str | None:
@@ -248,18 +265,8 @@ def read_text_table(path, *, label: str | None = None, encoding: str | None = No
     """
     path = os.fspath(path)
     label = label or path
-    if "\0" in path:
-        shown = label.replace("\0", "\\0")
-        raise ValueError(f"{shown}: cannot read (the path contains a NUL character)")
-    try:
-        with open(path, "rb") as handle:
-            data = handle.read()
-    except OSError as exc:
-        raise ValueError(f"{label}: cannot read ({exc.strerror or exc})") from None
-    kind = _binary_kind(data)
-    if kind is not None:
-        raise ValueError(f"{label}: {kind}, not a text table: export the record as CSV or text (a header such as "
-                         "'torque [N m],twist [rad]', then one sample per line)")
+    data = read_text_bytes(path, label, "not a text table: export the record as CSV or text (a header such as "
+                                        "'torque [N m],twist [rad]', then one sample per line)")
     text, used = _decode(label, data, encoding)
     lines = _LINE_BREAK.split(text)
     content = [(n, line) for n, line in enumerate(lines, start=1)
