@@ -48,14 +48,13 @@ def main():
     sizes = sorted({r["resolution"] for r in results[0]["rows"] if r["method"] == "complete"})
     left.set_xticks(sizes, [str(n) for n in sizes])
     left.minorticks_off()
-    left.set_xlabel("number of terms N")
+    left.set_xlabel("weak forms: number of terms N")
     left.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
-    left.legend(fontsize=7.5, title="weak forms", title_fontsize=7.5, ncol=1, loc="upper center",
-                bbox_to_anchor=(0.5, -0.2), frameon=False)
+    # below the axes, under the x label (each axis label names its method: no legend title to collide with it)
+    left.legend(fontsize=7.5, ncol=1, loc="upper center", bbox_to_anchor=(0.5, -0.24), frameon=False)
     right.set_xlabel("Abel-Fredholm: Nystr\u00f6m nodes")
     right.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
-    right.legend(fontsize=7.5, title="Abel–Fredholm", title_fontsize=7.5, loc="upper center",
-                 bbox_to_anchor=(0.5, -0.2), frameon=False)
+    right.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.24), frameon=False)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)
 

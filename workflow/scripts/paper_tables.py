@@ -24,9 +24,9 @@ from torsional_contact.solvers.kernels import TORQUE_ROTATION
 from torsional_contact.special.zeros import bessel_j2_zeros
 from torsional_contact.typeset import fixed, sci
 
-#: The illustrative specimen of the limitations paragraph: steel cylinders 5 mm in diameter at a
-#: contact pressure of 50 MPa, friction coefficient 0.5, loaded to the paper's T* = 1.23.
-SPECIMEN = {"radius_m": 2.5e-3, "shear_modulus_pa": 80e9, "pressure_pa": 50e6, "friction": 0.5, "torque": 1.23}
+#: The specimen of both papers (the limitations paragraph here; the worked example and the lab record of the
+#: companion): steel cylinders of radius 5 mm under 1 kN, friction coefficient 0.6, loaded to the paper's T* = 1.23.
+SPECIMEN = {"radius_m": 5e-3, "shear_modulus_pa": 80e9, "normal_force_n": 1000.0, "friction": 0.6, "torque": 1.23}
 #: End effects are quoted at this relative size.
 END_EFFECT_LEVEL = 1e-3
 
@@ -162,12 +162,14 @@ def limitation_macros() -> dict:
     """Slip of the illustrative specimen at T* = SPECIMEN['torque'] and the decay of the end effects."""
     sp = SPECIMEN
     state = solve(torque=sp["torque"])
-    unit = sp["friction"] * sp["pressure_pa"] * sp["radius_m"] / sp["shear_modulus_pa"]  # f p0 a / mu, m
+    pressure = sp["normal_force_n"] / (math.pi * sp["radius_m"] ** 2)  # p0 = F / (pi a^2), Pa
+    unit = sp["friction"] * pressure * sp["radius_m"] / sp["shear_modulus_pa"]  # f p0 a / mu, m
     edge_slip = float(state.slip(1.0))
     lam1 = float(bessel_j2_zeros(1)[0])
     return {
         "spec-diameter-mm": f"{2e3 * sp['radius_m']:g}",
-        "spec-pressure-mpa": f"{sp['pressure_pa'] / 1e6:g}",
+        "spec-force-kn": f"{sp['normal_force_n'] / 1e3:g}",
+        "spec-pressure-mpa": f"{pressure / 1e6:.3g}",
         "spec-friction": f"{sp['friction']:g}",
         "spec-shear-modulus-gpa": f"{sp['shear_modulus_pa'] / 1e9:g}",
         "spec-torque": f"{sp['torque']:g}",
