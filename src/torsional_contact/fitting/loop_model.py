@@ -131,6 +131,11 @@ class LoopModel:
         """Number of parameters P = 4 + M."""
         return 4 + self.reversals.size
 
+    @property
+    def residual_count(self) -> int:
+        """Length N + M of the residual vector (``distances``): N - M distances and 2 M reversal residuals."""
+        return self.twist.size + self.reversals.size
+
     def _curve_of(self, p, gradient: bool = False):
         """[walk, turning torques (with their gradient if ``gradient``), branch functions, twist of the virgin state,
         the walk's ``masing.pieces``] for p, cached for the last p."""
