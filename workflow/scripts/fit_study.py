@@ -15,6 +15,7 @@ import json
 import time
 
 from torsional_contact.provenance import latex_escape, provenance, write_json, write_macros, write_text
+from torsional_contact.typeset import sci
 from torsional_contact.verification.fit_study import PARAMETERS, Scenario, clopper_pearson, run_study, window_study
 from torsional_contact.verification.rig_records import RigSpecimen
 
@@ -37,16 +38,22 @@ def _bias(entry):
     if entry["median_bias"] is None:
         return "--"
     b = 100 * entry["median_bias"]
-    text = f"{b:+.2g}" if abs(b) < 10 else f"{b:+.0f}"
+    if abs(b) < 1e-3:  # scientific notation in LaTeX, not Python's "e-07"
+        text = ("+" if b >= 0 else "") + sci(b, 1)
+    else:
+        text = f"{b:+.2g}" if abs(b) < 10 else f"{b:+.0f}"
     if entry["median_bias_stderr"] is not None:
         text += f" \\pm {100 * entry['median_bias_stderr']:.2g}"
     return f"${text}$"
 
 
 def scenario_table(rows, replicates: int) -> str:
-    lines = [r"\setlength{\tabcolsep}{3pt}", r"\begin{tabular}{llrllllr}", r"\hline",
-             r"record & handling & samples & & interval coverage & bound coverage & median bias [\%] & warned \\",
-             r"\hline"]
+    # a long table (one block of rows per record and handling runs over a page): its caption is the paper's
+    # \fitstudycaption, its head repeated on each page, no page break inside a block
+    header = r"record & handling & samples & & interval coverage & bound coverage & median bias [\%] & warned \\"
+    lines = [r"\setlength{\tabcolsep}{3pt}", r"\begin{longtable}{llrllllr}",
+             r"\caption{\fitstudycaption}\label{tab:fit-study}\\", r"\hline", header, r"\hline", r"\endfirsthead",
+             r"\hline", header, r"\hline", r"\endhead"]
     for row in rows:
         head = [latex_escape(row["scenario"]), row["mode"], str(row["samples"])]
         if row["summary"] is None:
@@ -60,12 +67,12 @@ def scenario_table(rows, replicates: int) -> str:
             cells = (head if j == 0 else ["", "", ""]) + [f"${SYMBOLS[key]}$", _kn(e["interval_coverage"]),
                                                            _kn(e["bound_coverage"]), _bias(e),
                                                            _kn(s["warned"]) if j == 0 else ""]
-            lines.append(" & ".join(cells) + r" \\")
+            lines.append(" & ".join(cells) + (r" \\*" if j < len(PARAMETERS) - 1 else r" \\"))
         if s["refused"]["count"]:
             lines.append(rf" & & & \multicolumn{{5}}{{l}}{{refused with an error: {_kn(s['refused'])}}} \\")
         lines.append(r"\hline")
-    lines += [r"\end{tabular}",
-              rf"\par\smallskip\footnotesize {replicates} record(s) per row: rates as $k/n$ with exact 95\,\% "
+    lines += [r"\end{longtable}",
+              rf"\par\footnotesize {replicates} record(s) per row: rates as $k/n$ with exact 95\,\% "
               r"(Clopper--Pearson) intervals in per cent."]
     return "\n".join(lines) + "\n"
 
