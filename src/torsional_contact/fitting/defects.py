@@ -52,9 +52,9 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from scipy import optimize, special
+from scipy import optimize, sparse, special
 
-from .profile import covariance
+from .profile import covariance, is_large
 from .results import Estimate
 
 __all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "score_statistics",
@@ -86,7 +86,7 @@ def data_derivatives(fitted) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nda
         r = (model.torque - (model.twist - offset) / compliance) / w
         rows = np.arange(model.torque.size)
         return r, np.asarray(fitted.line.jac), np.full(r.size, 1.0 / w), np.full(r.size, -1.0 / (compliance * w)), rows
-    r, jac = model.distances(fitted.p, jacobian=True)
+    r, jac = model.distances(fitted.p, jacobian=True, sparse=is_large(model.residual_count, model.size))
     slope = model._project(fitted.p)[2]
     w = np.sqrt(s_t**2 + (slope * s_w) ** 2)
     free = model._free_index
@@ -94,7 +94,7 @@ def data_derivatives(fitted) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nda
     d_torque = np.concatenate([1.0 / w[free], np.full(m, 1.0 / s_t), np.zeros(m)])
     d_twist = np.concatenate([-slope[free] / w[free], np.zeros(m), np.full(m, 1.0 / s_w)])
     rows = np.concatenate([free, model.reversals, model.reversals])
-    return np.asarray(r), np.asarray(jac), d_torque, d_twist, rows
+    return np.asarray(r), jac if sparse.issparse(jac) else np.asarray(jac), d_torque, d_twist, rows
 
 
 def defect_directions(twist: np.ndarray, clock: np.ndarray) -> np.ndarray:
@@ -121,6 +121,39 @@ def _basis(jac: np.ndarray) -> np.ndarray:
     return u[:, keep]
 
 
+class _Complement:
+    """The projection onto the orthogonal complement of the column space of J (and of unit columns added to it).
+
+    A dense J: its orthonormal basis by the SVD (``_basis``), extended by the added columns.  A sparse J (a long
+    record, ``profile.SPARSE_ENTRIES``): z - J (J^T J)^+ J^T z with (J^T J)^+ from the column-scaled Gram matrix
+    (``profile.covariance`` with unit scale), never a dense basis of N rows; added columns are taken out one after
+    the other (they are orthogonal to J's columns and to each other)."""
+
+    def __init__(self, jac):
+        self.jac = jac
+        self.extra = []
+        if sparse.issparse(jac):
+            self.inverse = covariance(jac, 1.0)
+            self.basis = None
+        else:
+            self.basis = _basis(jac)
+
+    def __call__(self, z: np.ndarray) -> np.ndarray:
+        if self.basis is not None:
+            return _perp(self.basis, z)
+        out = z - self.jac @ (self.inverse @ (self.jac.T @ z))
+        for column in self.extra:
+            out = out - np.multiply.outer(column, column @ out) if out.ndim > 1 else out - column * (column @ out)
+        return out
+
+    def add(self, column: np.ndarray) -> None:
+        unit = column / math.sqrt(float(column @ column))
+        if self.basis is not None:
+            self.basis = np.column_stack([self.basis, unit])
+        else:
+            self.extra.append(unit)
+
+
 def score_statistics(fitted, clock: np.ndarray):
     """(selected kinds in order of entry, their LM statistics, the columns Z (rows, kinds), r, J, dof, s^2)."""
     r, jac, d_torque, d_twist, rows = data_derivatives(fitted)
@@ -130,14 +163,14 @@ def score_statistics(fitted, clock: np.ndarray):
                  axis=1)
     dof = max(r.size - jac.shape[1], 1)
     scale2 = float(r @ r) / dof
-    basis = _basis(jac)
+    complement = _Complement(jac)
     chosen, statistics = [], []
     while len(chosen) < len(KINDS):
         best, best_lm = None, 0.0
         for k in range(len(KINDS)):
             if k in chosen:
                 continue
-            zk = _perp(basis, z[:, k])
+            zk = complement(z[:, k])
             norm2 = float(zk @ zk)
             if norm2 <= 1e-24 * max(float(z[:, k] @ z[:, k]), 1e-300):
                 continue
@@ -148,8 +181,7 @@ def score_statistics(fitted, clock: np.ndarray):
             break
         chosen.append(best)
         statistics.append(best_lm)
-        zk = _perp(basis, z[:, best])
-        basis = np.column_stack([basis, zk / math.sqrt(float(zk @ zk))])
+        complement.add(complement(z[:, best]))
     return chosen, statistics, z, r, jac, dof, scale2
 
 
@@ -171,7 +203,7 @@ def _step(fitted, clock, kinds):
     r, jac, d_torque, d_twist, rows = data_derivatives(fitted)
     directions = defect_directions(fitted.model.twist, clock)
     z = np.stack([d_torque * directions[k, 0, rows] + d_twist * directions[k, 1, rows] for k in kinds], axis=1)
-    zp = _perp(_basis(jac), z)
+    zp = _Complement(jac)(z)
     step, *_ = np.linalg.lstsq(zp, r, rcond=None)
     dof = max(r.size - jac.shape[1] - len(kinds), 1)
     gain = float(r @ (zp @ step)) / (float(r @ r) / dof)
@@ -334,8 +366,10 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
     dof = max(r.size - jac.shape[1] - len(kinds), 1)
     scale2 = float(r @ r) / dof
     with np.errstate(invalid="ignore", divide="ignore"):
+        with_defects = sparse.hstack([jac, sparse.csr_matrix(z)], format="csr") if sparse.issparse(jac) else \
+            np.column_stack([jac, z])
         core = np.diag(covariance(jac, scale2))
-        joint = np.diag(covariance(np.column_stack([jac, z]), scale2))[:jac.shape[1]]
+        joint = np.diag(covariance(with_defects, scale2))[:jac.shape[1]]
         ratios = np.sqrt(np.where(core > 0, joint / core, 1.0))
     if final.p is None:  # a straight loop: C is the line's first parameter
         result = replace(result, compliance=_widened(result.compliance, float(ratios[0])))
@@ -344,7 +378,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         y_gradient = np.zeros(jac.shape[1])
         y_gradient[1], y_gradient[2] = p[2], p[1]
         cov_core = covariance(jac, scale2)
-        cov_joint = covariance(np.column_stack([jac, z]), scale2)[:jac.shape[1], :jac.shape[1]]
+        cov_joint = covariance(with_defects, scale2)[:jac.shape[1], :jac.shape[1]]
         y_core, y_joint = float(y_gradient @ cov_core @ y_gradient), float(y_gradient @ cov_joint @ y_gradient)
         y_ratio = math.sqrt(y_joint / y_core) if y_core > 0 else 1.0
         result = replace(result, friction=_widened(result.friction, float(ratios[0])),

@@ -365,7 +365,8 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
             jacobian = result.jac
             if s_full > better.s:  # the refit stopped short of the profile point: take the point itself
                 p, s_full = better.p, better.s
-                jacobian = model.distances(p, jacobian=True)[1]
+                jacobian = model.distances(p, jacobian=True,
+                                           sparse=profiles.is_large(model.residual_count, model.size))[1]
             scale2 = s_full / dof
             straight = (s_stick - s_full) / scale2
     return Fitted(_slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,

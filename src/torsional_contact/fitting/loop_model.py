@@ -81,6 +81,8 @@ FOOT_ITERATIONS = 12
 #: The grid of starting twists, in units of the reach of each sample's global minimum (``LoopModel._project``); it
 #: holds the measured twist (0).
 FOOT_GRID = np.linspace(-1.0, 1.0, 9)
+#: Samples whose starting grid is evaluated at once (bounds the memory of a long record's projection).
+FOOT_BLOCK = 8192
 #: Fractions of a foot-point step tried at once; a sample keeps the best that lowers its distance.
 STEP_FRACTIONS = np.array([1.0, 0.5, 0.25, 1.0 / 16.0])
 _FRACTIONS_COLUMN = STEP_FRACTIONS[:, None]
@@ -155,11 +157,12 @@ class LoopModel:
             curve[1] = turning_torques(curve[0], curve[2]["jacobian"], True)
         return curve
 
-    def torque_at(self, p, twist, jacobian: bool = False, index=None, curvature: bool = False):
+    def torque_at(self, p, twist, jacobian: bool = False, index=None, curvature: bool = False, sparse: bool = False):
         """(g, dg/dtheta, turning-point torques[, dg/dp or d^2g/dtheta^2]) at the twists ``twist`` of the samples
         ``index``.
 
-        ``index`` (default: every sample, in order) names the samples, hence their segments.
+        ``index`` (default: every sample, in order) names the samples, hence their segments.  ``sparse``: dg/dp as
+        a CSR matrix (``masing.jacobian_along``).
         """
         curve = self._curve_of(p)
         path, turning, branches, offset, lookup = curve
@@ -168,7 +171,7 @@ class LoopModel:
             # the turning points' gradient from the same evaluation of F as the samples' (``masing.jacobian_along``),
             # kept with the curve
             torque, slope, turning, jac = jacobian_along(path, np.asarray(twist, dtype=float) - offset, segment,
-                                                         branches["jacobian"], turning, lookup)
+                                                         branches["jacobian"], turning, lookup, sparse)
             curve[1] = turning
             return torque, slope, turning.torque, jac
         branch = branches["curvature" if curvature else "jacobian" if jacobian else "value"]
@@ -203,13 +206,20 @@ class LoopModel:
         measured = curve(self.twist, first, observed[2:], torque_only=True)  # ``torque_at`` at the measured twists
         misfit = (self.torque - measured) ** 2 / s_t2
         reach = self.twist_noise * np.sqrt(misfit)
-        grid = self.twist + FOOT_GRID[:, None] * reach
-        g_grid, s_grid, c_grid = curve(grid, first, observed[2:])
-        values = (self.torque - g_grid) ** 2 / s_t2 + (self.twist - grid) ** 2 / s_w2
         # every sample's state: rows twist u, torque g, slope g' and curvature g'' at its foot point so far, and its
-        # misfit there (``_descend``); the grid point of each sample in the flattened (grid point, sample) arrays
-        pick = values.argmin(axis=0) * columns.size + columns
-        state = np.array([grid, g_grid, s_grid, c_grid, values]).reshape(5, -1).take(pick, axis=1)
+        # misfit there (``_descend``); the grid is evaluated for blocks of samples (``FOOT_BLOCK``: the same numbers,
+        # sample by sample, with the memory of one block's grid)
+        state = np.empty((5, columns.size))
+        for start in range(0, columns.size, FOOT_BLOCK):
+            block = slice(start, start + FOOT_BLOCK)
+            twist, torque = self.twist[block], self.torque[block]
+            grid = twist + FOOT_GRID[:, None] * reach[block]
+            g_grid, s_grid, c_grid = curve(grid, first[block], observed[2:, block])
+            values = (torque - g_grid) ** 2 / s_t2 + (twist - grid) ** 2 / s_w2
+            # the grid point of each sample in the flattened (grid point, sample) arrays
+            size = twist.size
+            pick = values.argmin(axis=0) * size + np.arange(size)
+            state[:, block] = np.array([grid, g_grid, s_grid, c_grid, values]).reshape(5, -1).take(pick, axis=1)
         state = self._descend(curve, state, columns, first, observed)
         if lookup.thresholds:
             state = self._across_corners(curve, state, lookup, offset, reach, first, observed)
@@ -304,12 +314,13 @@ class LoopModel:
             state[:, moved[improved]] = end[:, improved]
         return state
 
-    def distances(self, p, jacobian: bool = False):
+    def distances(self, p, jacobian: bool = False, sparse: bool = False):
         """The residual vector (noise units) [and its Jacobian d/dp] (module docstring, "Turning points").
 
         The signed distances d_i of the samples other than the reversals, then for each reversal j its
         sample's torque and twist residuals against the turning point (U_j, T_j):
-        (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta.
+        (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta.  ``sparse``: the Jacobian as a CSR matrix, never
+        formed dense (long records: ``profile.SPARSE_ENTRIES``).
         """
         foot = self._project(p)
         u = foot[0]
@@ -332,16 +343,23 @@ class LoopModel:
             self._residual = (key, foot, (residual, scale))
         if not jacobian:
             return residual
-        if self._jacobian[0] == key and self._jacobian[1] is foot:
+        if self._jacobian[0] == (key, sparse) and self._jacobian[1] is foot:
             # the Jacobian of the last call with one (a profile's slope at the end of the fit that computed it)
             return residual, self._jacobian[2]
-        out = self.torque_at(p, u, True)
+        out = self.torque_at(p, u, True, sparse=sparse)
         turning = self._curve_of(p, True)[1]
         free = self._free_index
-        jac = np.concatenate([-out[3].take(free, axis=0) / scale.take(free)[:, None],
-                              -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
-        jac.flags.writeable = False  # handed out again
-        self._jacobian = (key, foot, jac)
+        if sparse:
+            from scipy import sparse as sp
+
+            jac = sp.vstack([sp.diags(-1.0 / scale.take(free)) @ out[3][free],
+                             sp.csr_matrix(-turning.gradient / self.torque_noise),
+                             sp.csr_matrix(self._twist_rows(len(p)))], format="csr")
+        else:
+            jac = np.concatenate([-out[3].take(free, axis=0) / scale.take(free)[:, None],
+                                  -turning.gradient / self.torque_noise, self._twist_rows(len(p))])
+            jac.flags.writeable = False  # handed out again
+        self._jacobian = ((key, sparse), foot, jac)
         return residual, jac
 
     def _twist_rows(self, size: int) -> np.ndarray:

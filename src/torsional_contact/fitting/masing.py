@@ -229,12 +229,16 @@ def curvature_along(lookup: Pieces, u, segment, branch):
 
 
 def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turning: Turning | None = None,
-                   lookup: Pieces | None = None):
+                   lookup: Pieces | None = None, sparse: bool = False):
     """``torque_along`` with ``jacobian``, returning the ``Turning`` (with its gradient) in the place of its torques.
 
     Where ``turning`` and ``lookup`` are known but not the turning points' gradient, F and its derivatives at the
     turning points come from the same evaluation of ``branch`` as the samples' (F acts elementwise: the same numbers
     as from two), and their torques are recomputed from it (the same numbers as ``turning``'s).
+
+    ``sparse``: the Jacobian as a ``scipy.sparse`` CSR matrix, built without its dense form (each sample's row is
+    its piece's origin gradient, few turning points in a steady loop, plus the skeleton's columns and one twist
+    column): the same numbers, for records whose dense Jacobian is large.
     """
     n_turning = path.targets.size - 1
     joint = turning is not None and turning.gradient is None and lookup is not None
@@ -259,10 +263,23 @@ def jacobian_along(path: Walk, u: np.ndarray, segment: np.ndarray, branch, turni
     known = path.origin >= 0
     q = values[2].shape[1]
     columns = q + 1 + n_turning
+    twist_column = np.where(known, q + 1 + path.origin, q).take(piece)
+    if sparse:
+        from scipy import sparse as sp
+
+        rows = np.arange(u.size)
+        local = sp.csr_matrix((np.concatenate([(gain[:, None] * values[2]).ravel(), -values[1]]),
+                               (np.concatenate([np.repeat(rows, q), rows]),
+                                np.concatenate([np.tile(np.arange(q), u.size), twist_column]))),
+                              shape=(u.size, columns))
+        if not n_turning:
+            return torque, values[1], turning, local
+        origins = sp.csr_matrix(turning.gradient[np.maximum(path.origin, 0)] * known[:, None])
+        return torque, values[1], turning, origins[piece] + local
     if n_turning:
         jac = (turning.gradient[np.maximum(path.origin, 0)] * known[:, None]).take(piece, axis=0)
     else:
         jac = np.zeros((u.size, columns))
     jac[:, :q] += gain[:, None] * values[2]
-    jac[np.arange(u.size), np.where(known, q + 1 + path.origin, q).take(piece)] -= values[1]
+    jac[np.arange(u.size), twist_column] -= values[1]
     return torque, values[1], turning, jac

@@ -48,7 +48,8 @@ from scipy import optimize, sparse
 
 from .loop_model import LoopModel
 
-__all__ = ["Constraint", "fit", "covariance", "ProfileEnd", "profile_end", "BetterMinimum", "ROOT_TOLERANCE"]
+__all__ = ["Constraint", "fit", "covariance", "is_large", "ProfileEnd", "profile_end", "BetterMinimum",
+           "ROOT_TOLERANCE"]
 
 #: Relative tolerance on sqrt(LR) at an interval's end.
 ROOT_TOLERANCE = 0.015
@@ -148,14 +149,13 @@ def fit(model: LoopModel, start, lower, upper, constraint: Constraint | None = N
     Returns (p, S, result) with p the full parameter vector and S = sum d_i^2.
     """
     size = model.size
-    is_sparse = _is_large(model.residual_count, size)
+    is_sparse = is_large(model.residual_count, size)
     if constraint is None:
         def fun(q):
             return model.distances(q)
 
         def jac(q):
-            jacobian = model.distances(q, jacobian=True)[1]
-            return sparse.csr_matrix(jacobian) if is_sparse else jacobian
+            return model.distances(q, jacobian=True, sparse=is_sparse)[1]
 
         lo, hi, q0 = lower, upper, np.asarray(start, dtype=float)
     else:
@@ -163,9 +163,9 @@ def fit(model: LoopModel, start, lower, upper, constraint: Constraint | None = N
             return model.distances(constraint.expand(q, size))
 
         def jac(q):
-            jacobian = model.distances(constraint.expand(q, size), jacobian=True)[1]
+            jacobian = model.distances(constraint.expand(q, size), jacobian=True, sparse=is_sparse)[1]
             if is_sparse:
-                return sparse.csr_matrix(jacobian) @ sparse.csr_matrix(constraint.tangent(q, size))
+                return (jacobian @ sparse.csr_matrix(constraint.tangent(q, size))).tocsr()
             return jacobian @ constraint.tangent(q, size)
 
         lo, hi = constraint.bounds(lower, upper, kappa_max)
@@ -182,7 +182,8 @@ def fit(model: LoopModel, start, lower, upper, constraint: Constraint | None = N
     return p, float(np.sum(result.fun**2)), result
 
 
-def _is_large(rows: int, columns: int) -> bool:
+def is_large(rows: int, columns: int) -> bool:
+    """Whether a Jacobian of that shape takes the sparse path (``SPARSE_ENTRIES``)."""
     return rows * columns >= SPARSE_ENTRIES
 
 
@@ -195,7 +196,7 @@ def covariance(jacobian: np.ndarray, scale2: float) -> np.ndarray:
     for the loop model's scaled columns (condition numbers of 10^2 to 10^4) is still far below the statistical
     error.  A long record's dense SVD cost as much as a fit."""
     rows, columns = jacobian.shape
-    if not sparse.issparse(jacobian) and not _is_large(rows, columns):
+    if not sparse.issparse(jacobian) and not is_large(rows, columns):
         u, s, vt = np.linalg.svd(jacobian, full_matrices=False)
         keep = s > s[0] * 1e-10 * math.sqrt(rows)
         return scale2 * ((vt[keep].T / s[keep] ** 2) @ vt[keep])
@@ -223,14 +224,13 @@ class ProfileEnd:
 
 def _slope(model: LoopModel, p, kind: str) -> float:
     """dS/dpsi along the profile: the partial derivative at the constrained minimum (envelope theorem)."""
-    d, jac = model.distances(p, jacobian=True)
+    d, jac = model.distances(p, jacobian=True, sparse=is_large(model.residual_count, model.size))
+    gradient = jac.T @ d  # dS/dp / 2, for a dense or a sparse Jacobian
     if kind == "slip_torque":
-        column = jac[:, 0]
-    elif kind == "compliance":
-        column = jac[:, 2]
-    else:  # y = kappa C at fixed C: d kappa / d y = 1 / C
-        column = jac[:, 1] / p[2]
-    return 2.0 * float(d @ column)
+        return 2.0 * float(gradient[0])
+    if kind == "compliance":
+        return 2.0 * float(gradient[2])
+    return 2.0 * float(gradient[1]) / p[2]  # y = kappa C at fixed C: d kappa / d y = 1 / C
 
 
 def _bracketed_newton(points, lo: float, hi: float, target: float) -> float:

@@ -33,6 +33,7 @@ import numpy as np
 from scipy import optimize, special  # normal tails from special: scipy.stats costs 0.5 s more to import
 
 from .loop_model import LoopModel
+from .profile import is_large
 
 __all__ = ["unit_scores", "path_length", "critical_value", "GRID"]
 
@@ -66,12 +67,14 @@ def unit_scores(model: LoopModel, compliance: float, offset: float, foot: np.nda
         ratios = np.geomspace(1.0 / gross, UNBONDED_REACH / gross, GRID)
     directions = []
     basis = None
+    large = is_large(model.residual_count, model.size)  # a long record: the Jacobian sparse, three columns dense
     for ratio in ratios:
         p = np.concatenate([[ratio * peak, 0.0, compliance, offset], turning])
-        jac = model.torque_at(p, foot, jacobian=True)[3]
+        jac = model.torque_at(p, foot, jacobian=True, sparse=large)[3]
+        columns = jac[:, 1:4].toarray() if large else jac[:, 1:4]  # kappa, C, theta_0
         if basis is None:  # the stick model's own directions (C, theta_0): the same at every T_s
-            basis = np.linalg.qr(jac[:, 2:4])[0]
-        score = jac[:, 1] - basis @ (basis.T @ jac[:, 1])
+            basis = np.linalg.qr(columns[:, 1:3])[0]
+        score = columns[:, 0] - basis @ (basis.T @ columns[:, 0])
         norm = float(np.linalg.norm(score))
         if norm > 0:
             directions.append(score / norm)
