@@ -83,6 +83,18 @@ def main():
         values[f"limit-{name.lower()}-first"] = sci(worst_first, 1)
         values[f"limit-{name.lower()}-last"] = sci(worst_last, 1)
     values["limit-worst-b"] = f"{largest['stick_radius']:g}"
+    # where the table tells T*_0 from T* under (C2): the (C2) distance from T*_0 at the largest N against the gap
+    # T* - T*_0 (a distance above the gap cannot say which of the two torques the scheme approaches)
+    def resolution(row):
+        return (row["regular_torque"] - row["limit_torque"]) / abs(row["printed"]["C2"][-1] - row["limit_torque"])
+
+    clear = max(rows, key=resolution)
+    values["limit-clear-b"] = f"{clear['stick_radius']:g}"
+    values["limit-clear-gap"] = f"{clear['regular_torque'] - clear['limit_torque']:.3f}"
+    values["limit-clear-c2-last"] = sci(abs(clear["printed"]["C2"][-1] - clear["limit_torque"]), 1)
+    values["limit-clear-ratio"] = f"{resolution(clear):.0f}"
+    unresolved = [row for row in rows if resolution(row) < 1.0]
+    values["limit-unresolved-b"] = ", ".join(f"{row['stick_radius']:g}" for row in unresolved) or "none"
     values["limit-edge-min"] = f"{min(abs(row['edge_coefficient']) for row in rows):.3f}"
     values["limit-edge-max"] = f"{max(abs(row['edge_coefficient']) for row in rows):.3f}"
     values["limit-gap-max"] = f"{max(row['regular_torque'] - row['limit_torque'] for row in rows):.4f}"
