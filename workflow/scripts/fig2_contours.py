@@ -49,8 +49,10 @@ def main():
         filled = ax.contourf(rr, zz, values, levels=levels, cmap="viridis")
         ax.contour(rr, zz, values, levels=filled.levels, colors="k", linewidths=0.3)
         ax.axvline(a.stick_radius, color="w", ls="--", lw=0.8)
-        ax.text(a.stick_radius / 2, 0.03 * a.z_max, "stick", color="w", ha="center", va="bottom")
-        ax.text((1 + a.stick_radius) / 2, 0.03 * a.z_max, "slip", color="w", ha="center", va="bottom")
+        # the zones are named above the frame, between it and the colour bar: inside, the labels would sit on the
+        # contours (those of sigma_rt crowd at the interface in the slip zone)
+        for x, zone in ((a.stick_radius / 2, "stick"), ((1 + a.stick_radius) / 2, "slip")):
+            ax.text(x, 1.02, zone, transform=ax.get_xaxis_transform(), ha="center", va="bottom")
         ax.set_xlabel(r"$r/a$")
         ax.set_ylabel(r"$z/a$")
         bar = fig.colorbar(filled, ax=ax, label=LABELS[quantity], location="top", pad=0.14, aspect=25)

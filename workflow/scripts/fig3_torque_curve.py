@@ -41,9 +41,9 @@ def main():
         ("torque_fast", dict(color="0.72", lw=5.0, solid_capstyle="butt", label="converged (Abel–Fredholm)")),
         ("torque_complete", dict(color="C0", lw=1.0, marker="o", ms=3.2, mfc="white", markevery=0.06,
                                  label=f"complete weak form, $N = {a.n_terms}$")),
-        ("torque_published", dict(color="C1", lw=1.3, label="reconstructed printed scheme,\nclosure $q(b) = 1$")),
+        ("torque_published", dict(color="C1", lw=1.3, label="reconstructed printed scheme,\nclosure (C1), $q(b) = 1$")),
         ("torque_published_torque_closure",
-         dict(color="C2", lw=1.3, ls=(0, (1, 1.2)), label="reconstructed printed scheme,\ntorque closure")),
+         dict(color="C2", lw=1.3, ls=(0, (1, 1.2)), label="reconstructed printed scheme,\nclosure (C3), torque")),
     )
     for column, style in curves:
         if column not in data.dtype.names:
@@ -69,7 +69,7 @@ def main():
     ax.set_ylabel(r"stick radius $b/a$")
     fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=8, handlelength=2.6,
                frameon=False)
-    fig.tight_layout(rect=(0, 0.17, 1, 1))  # the legend below the axes, off the curves
+    fig.tight_layout(rect=(0, 0.22, 1, 1))  # the legend below the axes and its x label, off the curves
     save_figure(fig, a.pdf, a.png)
 
 

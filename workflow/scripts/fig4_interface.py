@@ -15,6 +15,9 @@ LABELS = {
     "slip": r"slip $s\,\mu/(f p_0 a)$",
 }
 
+#: Panel letters in the manuscript's order (its caption names the panels (a)-(c)).
+PANELS = {"traction": "a", "sigma_rt": "b", "slip": "c"}
+
 
 def main():
     p = figure_parser(__doc__, quantities=LABELS)
@@ -44,8 +47,12 @@ def main():
         ax.set_xlabel(r"$r/a$")
         ax.set_ylabel(LABELS[quantity])
         ax.set_xlim(0, 1)
-        if quantity == "traction":  # the panels of the figure share one legend: it is drawn in this one
-            ax.legend(title=method_label(s), fontsize=7.5, title_fontsize=7.5)
+        ax.set_title(f"({PANELS[quantity]})", loc="left", pad=3)  # above the frame, off the curves
+        if quantity == figures[-1][0]:
+            # the panels share one legend: beside the last panel (the manuscript sets it alone in the row below
+            # the other two), where it covers no curve (inside any panel it would)
+            ax.legend(title=method_label(s), fontsize=7.5, title_fontsize=7.5, loc="center left",
+                      bbox_to_anchor=(1.06, 0.5), frameon=False)
         save_figure(fig, pdf, png)
 
 if __name__ == "__main__":

@@ -24,7 +24,7 @@ def main():
     weak = load_data(a.data).get("fig5_weak")
     if weak is not None:  # the paper's setting beside the converged curves, labelled as such
         ax.plot(np.array(weak["radii"]), weak["residual_traction"], "--", color="0.45", lw=1.0,
-                label=f"residual, complete weak form, $N = {weak['n_terms']}$ (the paper's truncation)")
+                label=f"residual, complete weak form, $N = {weak['n_terms']}$ (the original's truncation)")
     ax.axhline(1, color="0.5", lw=0.7)
     ax.axhline(-1, color="0.5", lw=0.7)
     ax.axvline(f5["loading_stick_radius"], color="0.5", ls=":", lw=0.8)
@@ -33,7 +33,7 @@ def main():
     ax.set_xlim(0, 1)
     ax.set_ylim(-1.1, 1.1)
     ax.legend(title=f"loaded to $T^* = {f5['t_max']:g}$ ($b/a = {f5['loading_stick_radius']:.4f}$)", ncol=2,
-              loc="upper center", bbox_to_anchor=(0.5, -0.17), fontsize=7.5, title_fontsize=8, frameon=False)
+              loc="upper center", bbox_to_anchor=(0.5, -0.2), fontsize=7.5, title_fontsize=8, frameon=False)
     fig.tight_layout()  # makes room for the legend below the axes
     save_figure(fig, a.pdf, a.png)
 

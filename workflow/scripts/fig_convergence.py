@@ -44,7 +44,8 @@ def main():
     left.set_xscale("log")
     left.set_yscale("log")
     right.set_yscale("log")
-    right.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
+    floor = f"$10^{{{round(np.log10(FLOOR))}}}$"  # FLOOR in the figure's notation, not code's
+    right.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {floor})")
     sizes = sorted({r["resolution"] for r in results[0]["rows"] if r["method"] == "complete"})
     left.set_xticks(sizes, [str(n) for n in sizes])
     left.minorticks_off()

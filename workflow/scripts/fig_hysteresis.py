@@ -5,7 +5,12 @@ Units: omega in f p0 / mu; energy per cycle in (f p0)^2 a^3 / mu.  Reads the his
 """
 
 
+import numpy as np
 from _plotting import figure_parser, load_data, save_figure, subplots, use_style
+
+#: Legends inside the narrow centre and right panels: short handles and padding, so that they keep to the
+#: empty upper left corner.
+COMPACT = dict(fontsize=7.5, handlelength=1.4, handletextpad=0.4, borderpad=0.3, borderaxespad=0.3, labelspacing=0.3)
 
 
 def main():
@@ -18,28 +23,33 @@ def main():
     for loop in data["loops"]:
         label = f"$[{loop['t_min']:g}, {loop['t_max']:g}]$"
         if loop["t_max"] - loop["t_min"] <= 2.0:
-            # a range below 2 is elastic: a vertical segment that lies on the sides of the wider loops, so it is
-            # drawn wide and translucent on top of them, with its two ends marked
+            # a range below 2 is elastic: a vertical segment that lies on a side of a wider loop (the unloading
+            # branch from the same turning point), so it is drawn thin and dashed on top of it, the loop showing
+            # through the gaps, with its two ends marked by bars
             label += " (elastic)"
-            loops.plot(loop["rigid_rotation"], loop["torque"], lw=5, alpha=0.45, solid_capstyle="butt", zorder=3,
-                       marker="o", markevery=[0, -1], ms=5, label=label)
+            # (the path runs up and back down the same segment: drawn once, from its lowest to its highest torque,
+            # else the dashes of the two passes fill each other's gaps)
+            omega = loop["rigid_rotation"][int(np.argmax(loop["torque"]))]
+            loops.plot([omega, omega], [min(loop["torque"]), max(loop["torque"])], color="k", lw=1.0,
+                       ls=(0, (2.5, 2)), zorder=4, marker="_", ms=7, mew=1.4, label=label)
         else:
             loops.plot(loop["rigid_rotation"], loop["torque"], label=label)
+    loops.margins(x=0.08)  # room for the end bars of a segment on the outermost branch
     loops.set_xlabel(r"rigid rotation $\omega\mu/f p_0$")
     loops.set_ylabel(r"$T^*$")
     handles, labels = loops.get_legend_handles_labels()
     d = data["dissipation_law"]
-    law.loglog(d["eps"], d["dissipation"], "o", label="memory rules")
+    law.loglog(d["eps"], d["dissipation"], "o", ms=4.5, label="memory rules")
     law.loglog(d["eps"], d["asymptote"], "-", label=r"$(\pi^4/3)\,\epsilon^3$")
     law.set_xlabel(r"$\epsilon = \Delta T^*/2 - 1$")
     law.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
-    law.legend(fontsize=8, loc="lower right")  # the data rise from lower left to upper right
+    law.legend(loc="upper left", **COMPACT)  # the data rise from lower left to upper right: upper left is free
     c = data["compliance"]
-    compliance.semilogy(c["torque"], c["d_omega_d_torque"], "o-", label="first loading")
+    compliance.semilogy(c["torque"], c["d_omega_d_torque"], "o-", ms=4.5, label="first loading")
     compliance.semilogy(c["torque"], c["asymptote"], "--", label=r"$(\pi^3/4)(T^*-1)^2$")
     compliance.set_xlabel(r"$T^*$")
-    compliance.set_ylabel(r"$d\omega/dT^*$")
-    compliance.legend(fontsize=8, loc="lower right")
+    compliance.set_ylabel(r"$d(\omega\mu/fp_0)/dT^*$")
+    compliance.legend(loc="upper left", **COMPACT)  # as in the centre panel: the data leave upper left free
     fig.legend(handles, labels, title=r"loops $[T^*_{\min}, T^*_{\max}]$", loc="lower center",
                ncol=min(len(labels), 4), fontsize=8, title_fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.22, 1, 1))  # the legend of the loops below the panels, off the data

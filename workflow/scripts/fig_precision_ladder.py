@@ -2,6 +2,7 @@
 converged 30-digit solution over the stick radius (T*, omega, interface traction and slip), and
 the truth's own convergence in the number of Nystrom nodes; reads precision_ladder.json."""
 
+import numpy as np
 from _plotting import figure_parser, load_data, rcParams, save_figure, subplots, use_style
 
 FLOOR = 1e-18  # exact zeros are drawn here, with open markers (said in the legend)
@@ -15,7 +16,7 @@ def plot_errors(ax, x, errors, marker, label, color):
     ax.semilogy([b for b, _ in shown], [e for _, e in shown], marker, color=color, label=label, ms=3)
     if zeros:
         ax.semilogy(zeros, [FLOOR] * len(zeros), marker[0], color=color, mfc="none", ms=5,
-                    label=f"{label}: exactly 0 (drawn at {FLOOR:.0e})")
+                    label=f"{label}: exactly 0 (drawn at $10^{{{round(np.log10(FLOOR))}}}$)")
 
 
 def main():
@@ -50,7 +51,7 @@ def main():
             zeros = [r["n_nodes"] for r in sel if r["torque_error"] == 0]
             if zeros:
                 right.semilogy(zeros, [CONVERGENCE_FLOOR] * len(zeros), "o", color=colors[k], mfc="none", ms=5)
-    right.set_xlabel("Nystrom nodes $n$")
+    right.set_xlabel("Nystr\u00f6m nodes $n$")
     right.set_ylabel(r"$|T^*_n - T^*_{\rm ref}|$")
     right.set_title("(c) nodes, arbitrary precision", fontsize=8)
     if conv:  # line style = working precision: long handles so that it shows

@@ -58,7 +58,7 @@ def main():
          dict(color="k", lw=2.0)),
         (f"complete weak form, $N = {n}$", complete.slip, complete.traction, complete.torque,
          dict(color="C0", lw=1.2, ls=(0, (5, 2)))),
-        ("printed scheme, closure (C1) $q(b) = 1$", *printed_scheme(b, n, "traction"),
+        ("printed scheme, closure (C1), $q(b) = 1$", *printed_scheme(b, n, "traction"),
          dict(color="C1", lw=1.3)),
         ("printed scheme, closure (C3), torque", *printed_scheme(b, n, "torque"),
          dict(color="C2", lw=1.3, ls=(0, (1, 1.2)))),
@@ -89,13 +89,13 @@ def main():
     trac_ax.set_ylim(*trac_range)
     slip_ax.set_ylabel(r"slip $s\,\mu/(f p_0 a)$")
     trac_ax.set_ylabel(r"$\sigma_{\theta z}(r,0)/f p_0$")
-    dslip_ax.set_ylabel("|slip − converged|")
-    dtrac_ax.set_ylabel("|traction − converged|")
+    dslip_ax.set_ylabel(r"|slip − converged| $\mu/(f p_0 a)$")
+    dtrac_ax.set_ylabel(r"|traction − converged|$/f p_0$")
     for ax in (dslip_ax, dtrac_ax):
         ax.set_xlabel(r"$r/a$")
         ax.set_ylim(FLOOR, 1.0)
-    for ax, tag in zip(axes.ravel(), "abcd", strict=True):
-        ax.text(0.02, 0.96, f"({tag})", transform=ax.transAxes, va="top")
+    for ax, tag in zip(axes.ravel(), "abcd", strict=True):  # above the frame: off the curves and reference lines
+        ax.set_title(f"({tag})", loc="left", pad=3)
     handles, labels = slip_ax.get_legend_handles_labels()
     floor = f"$10^{{{round(np.log10(FLOOR))}}}$"
     fig.legend(handles, labels, title=f"$b/a = {b:g}$; differences below {floor} drawn at that floor",

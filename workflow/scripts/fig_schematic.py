@@ -46,11 +46,14 @@ def plan_view(ax, b=0.6):
     ax.plot(b * np.cos(theta), b * np.sin(theta), "k--", lw=0.8)
     ax.annotate("", xy=(b * np.cos(0.6), b * np.sin(0.6)), xytext=(0, 0), arrowprops={"arrowstyle": "-|>", "lw": 0.8})
     ax.text(0.12, 0.28, "$b$", fontsize=9)
-    ax.annotate("", xy=(np.cos(-0.5), np.sin(-0.5)), xytext=(0, 0), arrowprops={"arrowstyle": "-|>", "lw": 0.8})
-    ax.text(0.45, -0.42, "$a$", fontsize=9)
+    a_angle = -np.pi / 6  # the radius a is drawn midway between two traction arrows, its label in the annulus
+    ax.annotate("", xy=(np.cos(a_angle), np.sin(a_angle)), xytext=(0, 0), arrowprops={"arrowstyle": "-|>", "lw": 0.8})
+    ax.text(0.8 * np.cos(a_angle) + 0.05, 0.8 * np.sin(a_angle) + 0.07, "$a$", fontsize=9, ha="center",
+            va="center")
     ax.text(-0.33, -0.08, "stick", fontsize=8)
-    ax.text(-0.95, 0.72, "slip", fontsize=8)
-    for angle in np.linspace(0, 2 * np.pi, 12, endpoint=False):  # the friction traction f p0 on the annulus
+    ax.text(-0.76, 0.78, "slip", fontsize=8, ha="right")  # outside the circle
+    # the friction traction f p0 on the annulus, 12 arrows offset by half their spacing from the radius a
+    for angle in np.linspace(0, 2 * np.pi, 12, endpoint=False) + np.pi / 12:
         x, y = 0.8 * np.cos(angle), 0.8 * np.sin(angle)
         ax.annotate("", xy=(x - 0.16 * np.sin(angle), y + 0.16 * np.cos(angle)), xytext=(x, y),
                     arrowprops={"arrowstyle": "-|>", "lw": 0.7, "color": "0.25"})

@@ -2,11 +2,12 @@
 interface traction (units f p0), for each method; reads the benchmark JSON."""
 
 
+import numpy as np
 from _plotting import figure_parser, load_data, save_figure, subplots, use_style
 
 STYLE = {"published": ("s:", "reconstructed printed scheme, N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm, node sweep"),
-         "reference": ("^--", "mpmath/flint, N = 145, digits sweep")}
+         "reference": ("^--", "complete, arbitrary precision, N = 145, digits sweep")}
 FLOOR = 1e-16  # errors at the rounding level (exact zeros included) are drawn here, with open markers
 
 
@@ -35,11 +36,12 @@ def main():
         ax.set_xlabel(what)
         ax.set_ylabel("wall time per stick radius [ms]")
         ax.invert_xaxis()
-    left.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {FLOOR:g})")
+    floor = f"$10^{{{round(np.log10(FLOOR))}}}$"  # FLOOR in the figure's notation, not code's
+    left.plot([], [], "D", color="0.4", mfc="white", label=f"at rounding level (drawn at {floor})")
     # two columns: three would make the legend wider than the text width, and the figure would be shrunk
     fig.legend(*left.get_legend_handles_labels(), fontsize=8, title=f"$b/a = {mid['stick_radius']:g}$",
                title_fontsize=8, loc="lower center", ncol=2, frameon=False)
-    fig.tight_layout(rect=(0, 0.27, 1, 1))  # one legend for both panels, below them
+    fig.tight_layout(rect=(0, 0.24, 1, 1))  # one legend for both panels, below them
     save_figure(fig, a.pdf, a.png)
 
 
