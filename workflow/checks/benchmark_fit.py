@@ -1,6 +1,7 @@
 """Benchmark of the loop fit against a baseline commit, in the same run: CPU seconds and peak memory.
 
     .venv/bin/python workflow/checks/benchmark_fit.py [--baseline COMMIT] [--sizes 1000 100000] [--repeats 5]
+        [--honesty RECORDS]
 
 Each record (a twist-controlled gross-slip loop of the synthetic rig, ``fitting.synthetic``, 50 cycles
 for the long records, two for the short ones, noise 0.5 % of the torque range and 1e-5 rad; made in each
@@ -10,7 +11,8 @@ removed afterwards), each fit in a
 fresh interpreter whose own CPU time (``time.process_time``, the fit alone) and peak resident memory
 (``ru_maxrss``) are measured; the median of ``--repeats`` runs, interleaved (baseline, current, ...)
 so that the machine's load falls on both alike, and the ratios current / baseline.  Also reported:
-the friction estimate and interval of each, against the truth f = 0.6.
+the friction estimate and interval of each, against the truth f = 0.6, and (where the tree reports them) each
+estimate's distance from the truth in its own standard errors (``z``: f, G and C) and the fit's warnings.
 """
 
 from __future__ import annotations
@@ -31,23 +33,28 @@ import numpy as np
 warnings.simplefilter("ignore")
 from torsional_contact import fit_loop
 from torsional_contact.fitting.synthetic import Rig, noisy, twist_controlled
-size = int(sys.argv[1])
+size, seed = int(sys.argv[1]), int(sys.argv[2])
 rig = Rig(radius=0.005, normal_force=1000.0, friction=0.6, shear_modulus=80e9, compliance=4e-4, offset=1e-4)
 cycles = 2 if size < 10_000 else 50
 torque, twist = twist_controlled(rig, 2.5e-3, cycles=cycles, samples_per_cycle=size // cycles)
-data = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(size))
+data = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(seed))
 start = time.process_time()
 fit = fit_loop(data[0], data[1], radius=0.005, normal_force=1000.0)
 cpu = time.process_time() - start
 rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+# each estimate against the rig's truth in its own standard errors (None: no value or no standard error)
+truth = {"friction": rig.friction, "shear_modulus": rig.shear_modulus, "compliance": rig.compliance}
+z = {name: None if getattr(fit, name).value is None or not getattr(fit, name).stderr else
+     (getattr(fit, name).value - value) / getattr(fit, name).stderr for name, value in truth.items()}
 print(json.dumps({"cpu": cpu, "rss_mb": rss, "friction": fit.friction.value,
-                  "interval": list(fit.friction.interval)}))
+                  "interval": list(fit.friction.interval), "z": z, "warnings": list(fit.warnings)}))
 """
 
 
-def _run(src: pathlib.Path, size: int, timeout: float) -> dict:
+def _run(src: pathlib.Path, size: int, timeout: float, seed: int | None = None) -> dict:
     env = {"PYTHONPATH": str(src), "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"}
-    out = subprocess.run([sys.executable, "-c", CHILD, str(size)], capture_output=True, text=True, env=env,
+    seed = size if seed is None else seed
+    out = subprocess.run([sys.executable, "-c", CHILD, str(size), str(seed)], capture_output=True, text=True, env=env,
                          timeout=timeout, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -58,7 +65,12 @@ def main(argv=None) -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=[1000, 100_000])
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--timeout", type=float, default=1800.0, help="seconds per fit at most")
+    parser.add_argument("--honesty", type=int, default=0, metavar="RECORDS",
+                        help="then fit RECORDS more records of each size (seeds size + 1, ...) with this tree alone "
+                             "and report each estimate's distance from the truth in standard errors")
     args = parser.parse_args(argv)
+    if args.repeats < 1 or args.honesty < 0 or any(size < 100 for size in args.sizes):
+        parser.error("--repeats: at least 1; --honesty: at least 0; --sizes: at least 100 samples each")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
         baseline = tmp / "baseline"
@@ -76,7 +88,8 @@ def main(argv=None) -> int:
                 for name, results in runs.items():
                     row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results),
                                  "peak_rss_mb": statistics.median(r["rss_mb"] for r in results),
-                                 "friction": results[0]["friction"], "interval": results[0]["interval"]}
+                                 "friction": results[0]["friction"], "interval": results[0]["interval"],
+                                 "z": results[0].get("z"), "warnings": results[0].get("warnings")}
                 row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
                 row["rss_ratio"] = row["current"]["peak_rss_mb"] / row["baseline"]["peak_rss_mb"]
                 rows.append(row)
@@ -84,6 +97,13 @@ def main(argv=None) -> int:
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(baseline)], check=False,
                            capture_output=True)
+    for size in args.sizes if args.honesty else []:
+        runs = [_run(ROOT / "src", size, args.timeout, seed=size + k) for k in range(1, args.honesty + 1)]
+        worst = {name: max(abs(r["z"][name]) for r in runs if r["z"][name] is not None) for name in runs[0]["z"]
+                 if any(r["z"][name] is not None for r in runs)}
+        print(json.dumps({"samples": size, "honesty_records": len(runs), "z": [r["z"] for r in runs],
+                          "largest_abs_z": worst, "cpu_s": [r["cpu"] for r in runs],
+                          "warnings": [r["warnings"] for r in runs]}), flush=True)
     return 0
 
 
