@@ -131,7 +131,7 @@ from . import profile as profiles
 from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
 from .per_cycle import cycles_with_progress
-from .record_checks import checked_time, prepared_record
+from .record_checks import checked_time, many_reversals_note, prepared_record
 from .results import Estimate, LoopFit
 from .samples import checked_loop
 from .slip_test import GRID, critical_value, path_length
@@ -257,7 +257,8 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     if per_cycle:
         clock = clock if time is not None else None
         result = replace(result, cycles=tuple(cycles_with_progress(record, settings, _fit_prepared, clock)))
-    return result
+    note = many_reversals_note(record.reversals.size, result)
+    return result if note is None else replace(result, warnings=(*result.warnings, note))
 
 
 @dataclass
