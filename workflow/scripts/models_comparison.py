@@ -23,8 +23,12 @@ from torsional_contact.typeset import sci
 NAMES = ("cylinder", "half-space", "hertz", "flat-punch")
 #: The fits shown: (true model, assumed model).
 FITS = (("cylinder", "half-space"), ("hertz", "half-space"), ("flat-punch", "half-space"), ("hertz", "cylinder"))
-#: |f_fit / f - 1| above which a wrong-model fit is said to matter (the window of the text).
+#: |f_fit / f - 1| above which a wrong-model fit is said to matter (the band of the figure).
 MATTERS = 0.05
+#: Fractions A / (2 T*_gs) of the true contact's gross-slip range at which the text quotes f_fit / f.
+QUOTED = (0.1, 0.5, 0.8, 0.9, 0.95)
+#: The fraction that stands for the gross-slip limit A -> 2 T*_gs (the fit at spinning itself is degenerate).
+GROSS_LIMIT = 1 - 1e-6
 
 
 def _twist(contact, tau):
@@ -73,8 +77,10 @@ def main():
         truth = contacts[true]
         kappa = np.array([apparent_friction_ratio(2 * truth.gross_slip_torque * x, true_model=true,
                                                   assumed_model=assumed) for x in fractions])
+        quoted = {x: apparent_friction_ratio(2 * truth.gross_slip_torque * x, true_model=true, assumed_model=assumed)
+                  for x in (*QUOTED, GROSS_LIMIT)}
         fits.append({"true": true, "assumed": assumed, "fraction": fractions, "ratio": kappa,
-                     "window": _window(fractions, kappa)})
+                     "window": _window(fractions, kappa), "quoted": quoted})
 
     # ------------------------------------------------------------------ figure
     use_style(a.style)
@@ -115,7 +121,9 @@ def main():
         "models": rows,
         "fits": [{"true": f["true"], "assumed": f["assumed"], "fraction": f["fraction"].tolist(),
                   "friction_ratio": [None if math.isinf(k) else float(k) for k in f["ratio"]],
-                  "window": f["window"]} for f in fits],
+                  "window": f["window"],
+                  "quoted": {f"{x:g}": None if math.isinf(k) else float(k) for x, k in f["quoted"].items()}}
+                 for f in fits],
         "matters": MATTERS,
     }, method="model table: monotonic interpolants and W(A) = 4 W_mono(A/2) (Masing); Brent's method for the fits",
         resolution=f"{a.n_points} torques per curve, {a.fit_points} ranges per fit", precision="IEEE double")
@@ -140,15 +148,18 @@ def main():
         values[f"models-{key}-onset"] = f"{r['slip_onset_torque']:.4f}"
         values[f"models-{key}-b-half"] = f"{r['stick_radius_at_half_gross']:.3f}"
         values[f"models-{key}-energy-gross"] = sci(r["energy_at_gross_range"], 3)
+        # where slip starts, as a fraction of the gross-slip range (below it a model dissipates nothing)
+        values[f"models-{key}-onset-fraction"] = f"{r['slip_onset_torque'] / r['gross_slip_torque']:.2f}"
+    # f_fit / f at stated ranges and in the gross-slip limit (not the ends of the sampled grid: the ratio tends to
+    # 0 in small cycles of a Hertzian contact and is unbounded at the onset of the cylinders and the punch);
+    # "--" where no finite friction fits (the true contact dissipates nothing)
     for f in fits:
         key = f"models-fit-{f['true']}-as-{f['assumed']}"
-        finite = f["ratio"][np.isfinite(f["ratio"])]
-        values[f"{key}-min"] = f"{np.min(finite):.3f}" if finite.size else "--"
-        values[f"{key}-max"] = f"{np.max(finite):.3f}" if finite.size else "--"
-        window = f["window"]
-        values[f"{key}-window"] = "none" if window is None else f"{window[0]:.2f}--{window[1]:.2f}"
-        mid = f["ratio"][len(f["ratio"]) // 2]
-        values[f"{key}-mid"] = "--" if math.isinf(mid) else f"{mid:.3f}"
+        for x, k in f["quoted"].items():
+            name = "gross" if x == GROSS_LIMIT else f"{x:g}"
+            values[f"{key}-at-{name}"] = "--" if math.isinf(k) else f"{k:#.3g}"
+        finite = [k for k in (*f["ratio"], f["quoted"][GROSS_LIMIT]) if math.isfinite(k)]
+        values[f"{key}-least-error"] = f"{100 * min(abs(k - 1) for k in finite):.2g}" if finite else "--"
     write_macros(a.macros, values, "workflow/scripts/models_comparison.py")
 
 
