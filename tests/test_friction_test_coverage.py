@@ -43,3 +43,25 @@ def test_bad_worker_count_is_rejected(tmp_path):
     assert result.returncode == 2
     assert "--workers" in result.stderr and result.stdout == ""
     assert not any((tmp_path / "bad").iterdir())
+
+
+def test_interval_and_bound_coverage_are_reported_apart_with_clopper_pearson_intervals(tmp_path):
+    sys.path.insert(0, str(ROOT / "src"))
+    from torsional_contact.verification.fit_study import clopper_pearson
+
+    result = run(tmp_path / "cp", "--workers", "1")
+    assert result.returncode == 0, result.stderr
+    rows = json.loads((tmp_path / "cp" / "c.json").read_text())["scenarios"]
+    table = (tmp_path / "cp" / "c.tex").read_text()
+    assert "interval coverage" in table and "bound coverage" in table and r"\pm" not in table
+    for row in rows:
+        for key in ("friction", "shear_modulus", "compliance"):
+            e = row[key]
+            for kind, status in (("interval_coverage", "interval"), ("bound_coverage", "bound")):
+                rate = e[kind]
+                assert rate["trials"] == round(e[status] * row["draws"])
+                if rate["trials"]:
+                    assert rate["interval"] == list(clopper_pearson(rate["count"], rate["trials"]))
+                    assert f"{rate['count']}/{rate['trials']}" in table
+                else:
+                    assert rate["interval"] is None

@@ -4,7 +4,7 @@ dissipated per cycle in the partial-slip band.
 
 Units: normal force N, torque N m, energy J.  Slip starts at T_a = f F a / 2 (T* = 1), the
 cylinders spin at T_a = 2 f F a / 3 (T* = 4/3); between them a cycle dissipates
-W(2 T*_a) (f F)^2 / (pi^2 mu a) (``histories``, rule 5).  The specimen (a, f, G) is the lab
+W(2 T*_a) (f F)^2 / (pi^2 G a) (``histories``, rule 5).  The specimen (a, f, G) is the lab
 record's (notebooks/data/lab_loop.json).
 """
 
@@ -34,12 +34,18 @@ def main():
     ax.axhspan(low, 1.0, color="#d9ecd9", label="stick (shakedown)")
     ax.axhspan(1.0, 4.0 / 3.0, color="#fde9c8", label="partial slip")
     ax.axhspan(4.0 / 3.0, top, color="#f6d0d0", label="gross slip (spinning)")
-    # energy per cycle in the partial-slip band: W(2 T*_a) (f F)^2 / (pi^2 mu a)
+    # energy per cycle in the partial-slip band: W(2 T*_a) (f F)^2 / (pi^2 G a)
     grid_force, ratio = np.meshgrid(force, np.linspace(1.0005, 4.0 / 3.0 - 1e-6, 200))
     work = 4.0 * monotonic_curves().work(ratio) * (friction * grid_force) ** 2 / (np.pi**2 * modulus * radius)
-    levels = 10.0 ** np.arange(-8, -1)
+    # decades up to 1e-3 J (a 1e-2 J line would hug the gross-slip boundary at these forces)
+    levels = 10.0 ** np.arange(-8, -2)
     lines = ax.contour(grid_force, ratio, work, levels=levels, colors="0.25", linewidths=0.6)
-    ax.clabel(lines, fmt=lambda v: f"$10^{{{round(np.log10(v))}}}$ J", fontsize=7.5)
+    # labels staggered along the force axis, where neighbouring lines are far enough apart for them
+    places = []
+    for path, target in zip(lines.get_paths(), np.linspace(0.2, 0.9, levels.size) * a.max_force, strict=True):
+        if path.vertices.size:  # one path per level: the vertex nearest the target force
+            places.append(tuple(path.vertices[np.argmin(np.abs(path.vertices[:, 0] - target))]))
+    ax.clabel(lines, fmt=lambda v: f"$10^{{{round(np.log10(v))}}}$ J", fontsize=7.5, manual=places)
     example = Specimen(radius=radius, normal_force=data["normal_force"], friction=friction, shear_modulus=modulus)
     amplitude = 1.8  # N m, the example of the text
     example_ratio = amplitude / (0.5 * friction * data["normal_force"] * radius)
@@ -50,7 +56,7 @@ def main():
     ax.set_ylim(low, top)
     ax.set_xlabel(r"normal force $F$ [N]")
     ax.set_ylabel(r"torque amplitude $2T_a/(fFa)$")
-    ax.set_title(f"$a$ = {radius * 1e3:g} mm, $f$ = {friction:g}, $\\mu$ = {modulus / 1e9:g} GPa; "
+    ax.set_title(f"$a$ = {radius * 1e3:g} mm, $f$ = {friction:g}, $G$ = {modulus / 1e9:g} GPa; "
                  "contours: energy per cycle", fontsize=8)
     ax.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)  # off the data
     fig.tight_layout()

@@ -20,6 +20,22 @@ from torsional_contact.verification.fit_study import PARAMETERS, Scenario, clopp
 from torsional_contact.verification.rig_records import RigSpecimen
 
 SYMBOLS = {"friction": "f", "shear_modulus": "G", "compliance": "C"}
+#: The scenarios of the configuration in words, for the text (the tables name them by their identifiers).
+DESCRIPTIONS = {
+    "clean": "the clean record",
+    "stuck-lag": "the lag on a contact that stays stuck",
+    "lag": "the lag of the twist channel",
+    "spikes": "the spikes on the twist",
+    "exact-torque": "the commanded (exact) torque channel",
+    "exact-gross": "the commanded (exact) torque channel of a twist-controlled record into gross slip",
+    "drift": "the drift of the twist",
+    "offset": "the zero offset of the torque",
+    "non-virgin": "the record without its first half cycle",
+    "inverted": "the inverted twist channel",
+    "quantised": "the quantised channels",
+    "running-in": "the running-in record",
+    "long": "the long record",
+}
 
 
 def _pct(x, digits=0):
@@ -78,12 +94,15 @@ def scenario_table(rows, replicates: int) -> str:
 
 
 def window_table(rows) -> str:
-    lines = [r"\begin{tabular}{rllll}", r"\hline",
-             r"$\max T^*$ & loop fit: $f$ coverage & $f$ bias [\%] & $G$ identified & plateau: $f$ bias [\%] \\",
+    # the twist amplitude tells apart the records that ride the plateau (their max T* is the gross-slip torque)
+    lines = [r"\begin{tabular}{rrllll}", r"\hline",
+             r"$\max T^*$ & twist amplitude & \multicolumn{3}{l}{loop fit} & plateau \\",
+             r" & [mrad] & $f$ coverage & $f$ bias [\%] & $G$ identified & $f$ bias [\%] \\",
              r"\hline"]
     for row in rows:
         fit = row["fit"]
-        lines.append(" & ".join([f"{row['max_torque_ratio']:.4g}", _kn(fit["friction"]["interval_coverage"]),
+        lines.append(" & ".join([f"{row['max_torque_ratio']:.4g}", f"{1e3 * row['twist_amplitude']:.3g}",
+                                 _kn(fit["friction"]["interval_coverage"]),
                                  _bias(fit["friction"]), _kn(fit["shear_modulus"]["identified"]),
                                  _bias(row["plateau"])]) + r" \\")
     lines += [r"\hline", r"\end{tabular}"]
@@ -163,6 +182,16 @@ def macros(rows, window, config, replicates, long_replicates) -> dict:
     failing = sorted({r["scenario"] for r in rows if r["mode"] == "on" and r["summary"]
                       and r["summary"]["honest"]["count"] < r["summary"]["honest"]["trials"]})
     out["fs-failing"] = latex_escape(", ".join(failing) if failing else "none")
+    # the same in words, with the parameters whose interval or bound missed the truth
+    words = []
+    for name in failing:
+        row = next(r for r in rows if r["scenario"] == name and r["mode"] == "on")
+        missed = [f"${SYMBOLS[key]}$" for key in PARAMETERS
+                  if any(row["summary"][key][kind]["count"] < row["summary"][key][kind]["trials"]
+                         for kind in ("interval_coverage", "bound_coverage"))]
+        text = latex_escape(DESCRIPTIONS.get(name, name))
+        words.append(text + (f" (the interval or bound on {' and '.join(missed)} missed the truth)" if missed else ""))
+    out["fs-failing-words"] = "; ".join(words) if words else "none"
     for j, row in enumerate(window):
         out[f"fs-window-{j}-tmax"] = f"{row['max_torque_ratio']:.3g}"
         out[f"fs-window-{j}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)

@@ -6,10 +6,11 @@ made once and ``--draws`` noisy copies are fitted with ``fit_loop`` (noise level
 each record, as a user's would be).  For each parameter every draw ends in one of three ways: an
 interval (the parameter is identified: a value and both ends from the data), a bound (not
 identified: what the data do say, one end open or set by the model's bound on kappa), or nothing.
-Per scenario and parameter the table gives how often each happened, the coverage of the reported
-intervals and bounds (a bound covers when the truth lies within it) with its binomial standard
-error, and, over the identified draws, the median relative bias of the value and the median
-relative width of the interval.  For a loop in stick the rate at which slip is detected is the
+Per scenario and parameter the table gives, apart, the coverage of the reported intervals and that of
+the reported bounds (a bound covers when the truth lies within it), each as k of n with its exact
+(Clopper-Pearson) 95 % interval (``verification.fit_study.clopper_pearson``), n the draws that got an
+interval or a bound, and, over the identified draws, the median relative bias of the value and the
+median relative width of the interval.  For a loop in stick the rate at which slip is detected is the
 slip test's false-alarm rate (its level is 5 %).
 
 Units: torque N m, twist rad, friction 1, G Pa, compliance rad / (N m).  Output: a JSON data file
@@ -27,12 +28,14 @@ import time
 import warnings
 
 import numpy as np
+from scipy.stats import binom
 
 from torsional_contact import fit_loop
 from torsional_contact.diagnostics import NoiseLimitedFitWarning
 from torsional_contact.fitting.synthetic import Rig, noisy, torque_controlled, twist_controlled
 from torsional_contact.provenance import latex_escape, write_json, write_macros, write_text
 from torsional_contact.typeset import sci
+from torsional_contact.verification.fit_study import clopper_pearson
 
 PARAMETERS = (("friction", "f"), ("shear_modulus", "G"), ("compliance", "C"))
 CONFIDENCE = 0.95
@@ -43,6 +46,12 @@ def binomial_stderr(successes: int, trials: int) -> float:
     n successes do not claim an error of 0)."""
     p = (successes + 1) / (trials + 2)
     return math.sqrt(p * (1 - p) / trials)
+
+
+def rate(successes: int, trials: int) -> dict:
+    """k of n with its exact (Clopper-Pearson) interval at ``CONFIDENCE`` (None without trials)."""
+    interval = list(clopper_pearson(successes, trials, CONFIDENCE)) if trials else None
+    return {"count": int(successes), "trials": int(trials), "interval": interval}
 
 
 def outcome(estimate, truth: float) -> dict:
@@ -67,6 +76,9 @@ def summary(outcomes, draws: int) -> dict:
         out[name] = covered / len(group) if group else None
         out[name + "_stderr"] = binomial_stderr(covered, len(group)) if group else None
         out[name + "_count"] = len(group)
+    bounded = [o for o in outcomes if o["status"] == "bound"]
+    for name, group in (("interval_coverage", identified), ("bound_coverage", bounded)):
+        out[name] = rate(sum(o["covered"] for o in group), len(group))
     out["median_bias"] = float(np.median([o["error"] for o in identified])) if identified else None
     out["median_width"] = float(np.median([o["width"] for o in identified])) if identified else None
     return out
@@ -118,7 +130,8 @@ def scenario_record(rig, scenario, torque, torque_noise, fits):
            "torque_noise": torque_noise, "torque_noise_fraction": scenario["torque_noise"],
            "twist_noise": scenario["twist_noise"],
            "max_torque_ratio": float(np.max(np.abs(torque)) / rig.slip_torque), "draws": draws,
-           "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws)}
+           "slip_detected": slips / draws, "slip_detected_stderr": binomial_stderr(slips, draws),
+           "slip_detected_rate": rate(slips, draws)}
     for key in truth:
         out[key] = summary([outcomes[key] for _, outcomes, _ in fits], draws)
     cpu = sum(seconds for _, _, seconds in fits)
@@ -130,14 +143,17 @@ def _percent(x, digits=0):
     return "--" if x is None else f"{100 * x:.{digits}f}"
 
 
-#: Fewest reported intervals or bounds for a coverage to be printed (below it the rate says little).
-MIN_REPORTED = 5
+def _kn(entry):
+    """'k/n' of a rate, '--' without trials."""
+    return "--" if not entry["trials"] else f"{entry['count']}/{entry['trials']}"
 
 
-def _coverage(entry):
-    if entry["coverage"] is None or entry["coverage_count"] < MIN_REPORTED:
-        return "--"
-    return f"${100 * entry['coverage']:.0f} \\pm {100 * entry['coverage_stderr']:.0f}$"
+def _cp(entry):
+    """'[lo, hi]' of a rate's Clopper-Pearson interval in per cent, empty without trials."""
+    if not entry["trials"]:
+        return ""
+    lo, hi = entry["interval"]
+    return f"[{100 * lo:.0f}, {100 * hi:.0f}]"
 
 
 def _signed(x):
@@ -159,16 +175,19 @@ def _width(x):
 
 
 def table(rows) -> str:
-    # column headers on two lines and narrower column gaps: the table fits the text width at \small
-    lines = [r"\setlength{\tabcolsep}{3.5pt}", r"\begin{tabular}{lrrrrlrrrrr}", r"\hline",
-             r"scenario & $\max|T^*|$ & $s_T$ & $s_\theta$ & slip & & value & bound & coverage & median & median \\",
-             r" & & [N\,m] & [rad] & [\%] & & [\%] & [\%] & [\%] & bias [\%] & width [\%] \\", r"\hline"]
+    # interval and bound coverage apart, each k/n and its Clopper-Pearson interval in its own column; two header
+    # lines: the table fits the text width at \scriptsize (the size of the fit-study table)
+    lines = [r"\setlength{\tabcolsep}{4pt}", r"\begin{tabular}{lrrrrlrlrlrr}", r"\hline",
+             r"scenario & $\max|T^*|$ & $s_T$ & $s_\theta$ & slip & & \multicolumn{2}{c}{interval coverage}"
+             r" & \multicolumn{2}{c}{bound coverage} & median & median \\",
+             r" & & [N\,m] & [rad] & & & $k/n$ & [\%] & $k/n$ & [\%] & bias [\%] & width [\%] \\", r"\hline"]
     for r in rows:
         for j, (key, symbol) in enumerate(PARAMETERS):
             e = r[key]
             head = [latex_escape(r["name"]), f"{r['max_torque_ratio']:.3g}", f"${sci(r['torque_noise'], 1)}$",
-                    f"${sci(r['twist_noise'], 1)}$", _percent(r["slip_detected"])] if j == 0 else [""] * 5
-            cells = head + [f"${symbol}$", _percent(e["interval"]), _percent(e["bound"]), _coverage(e),
+                    f"${sci(r['twist_noise'], 1)}$", _kn(r["slip_detected_rate"])] if j == 0 else [""] * 5
+            cells = head + [f"${symbol}$", _kn(e["interval_coverage"]), _cp(e["interval_coverage"]),
+                            _kn(e["bound_coverage"]), _cp(e["bound_coverage"]),
                             _signed(e["median_bias"]), _width(e["median_width"])]
             lines.append(" & ".join(cells) + r" \\")
         lines.append(r"\hline")
@@ -215,21 +234,29 @@ def main():
               "ft-modulus-gpa": f"{specimen['shear_modulus'] / 1e9:g}",
               "ft-compliance": f"{sci(specimen['compliance'], 1)}", "ft-radius-mm": f"{specimen['radius'] * 1e3:g}",
               "ft-force-n": f"{specimen['normal_force']:g}",
-              "ft-coverage-stderr": f"{100 * math.sqrt(CONFIDENCE * (1 - CONFIDENCE) / args.draws):.1f}"}
+              # how many of the draws a nominal 95 % coverage gives, in 95 % of studies (binomial quantiles)
+              "ft-nominal-lo": f"{binom.ppf((1 - CONFIDENCE) / 2, args.draws, CONFIDENCE):.0f}",
+              "ft-nominal-hi": f"{binom.ppf((1 + CONFIDENCE) / 2, args.draws, CONFIDENCE):.0f}"}
     for r in rows:
         key = r["name"]
         for name, symbol in PARAMETERS:
             e = r[name]
             short = symbol.lower()
-            macros[f"ft-{key}-cov-{short}"] = _percent(e["coverage"] if e["coverage_count"] >= MIN_REPORTED else None)
-            macros[f"ft-{key}-cov-se-{short}"] = _percent(e["coverage_stderr"])
+            for kind, tag in (("interval_coverage", "icov"), ("bound_coverage", "bcov")):
+                c = e[kind]
+                macros[f"ft-{key}-{tag}-{short}"] = _kn(c)
+                lo, hi = c["interval"] if c["trials"] else (None, None)
+                macros[f"ft-{key}-{tag}-lo-{short}"] = _percent(lo)
+                macros[f"ft-{key}-{tag}-hi-{short}"] = _percent(hi)
             macros[f"ft-{key}-interval-{short}"] = _percent(e["interval"])
             macros[f"ft-{key}-bound-{short}"] = _percent(e["bound"])
             macros[f"ft-{key}-width-{short}"] = _percent(e["median_width"], 1)
         macros[f"ft-{key}-twist-noise"] = sci(r["twist_noise"], 1)
+        macros[f"ft-{key}-torque-noise"] = sci(r["torque_noise"], 1)
         macros[f"ft-{key}-torque-noise-pct"] = f"{100 * r['torque_noise_fraction']:.2g}"
-        macros[f"ft-{key}-slip"] = _percent(r["slip_detected"])
-        macros[f"ft-{key}-slip-se"] = _percent(r["slip_detected_stderr"], 1)
+        macros[f"ft-{key}-slip"] = _kn(r["slip_detected_rate"])
+        macros[f"ft-{key}-slip-lo"] = _percent(r["slip_detected_rate"]["interval"][0])
+        macros[f"ft-{key}-slip-hi"] = _percent(r["slip_detected_rate"]["interval"][1])
     write_macros(args.macros, macros, "workflow/scripts/friction_test_coverage.py")
 
 

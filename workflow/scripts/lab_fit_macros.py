@@ -7,7 +7,10 @@ parameters (lab_loop.json); writes the fit as a JSON data file with provenance a
 import argparse
 import json
 
+import numpy as np
+
 from torsional_contact import fit_loop
+from torsional_contact.io.fit_report import residual_columns
 from torsional_contact.io.lab_files import read_lab_columns
 from torsional_contact.provenance import write_json, write_macros
 
@@ -37,6 +40,11 @@ def main():
         "lab-torque-noise": f"{truth['torque_noise']:g}", "lab-twist-noise-urad": f"{truth['twist_noise'] * 1e6:g}",
         "lab-correlation": f"{fit.correlation:.2f}",
     }
+    # the residuals of Fig. lab_fit: distances from the fitted curve in noise units (the --residuals columns)
+    distance = residual_columns(fit, columns)["normalized_residual"]
+    distance = distance[np.isfinite(distance)]
+    macros["lab-distance-rms"] = f"{np.sqrt(np.mean(distance**2)):.2f}"
+    macros["lab-distance-beyond-two-pct"] = f"{100 * np.mean(np.abs(distance) > 2):.1f}"
     write_macros(a.macros, macros, "workflow/scripts/lab_fit_macros.py")
 
 

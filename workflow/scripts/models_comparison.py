@@ -1,8 +1,9 @@
 """The contact models side by side: slip onset, twist, energy per cycle and the friction a wrong-model fit returns.
 
-Units: T* = 2T/(f F a); b in a; relative twist in f p-bar / mu (half-space models: n Omega, the
-rotation of remote points, n the elastic bodies; cylinders: 2 omega, the twist the interface adds
-beyond the shafts' uniform twist); energy per cycle W in (f p-bar)^2 a^3 / mu; A the torque range.
+Units: T* = 2T/(f F a); b in a; G the shear modulus, p-bar = F/(pi a^2) the mean pressure; relative twist in
+f p-bar / G (half-space models: n Omega, the rotation of remote points, n the elastic bodies; cylinders: 2 omega,
+the twist the interface adds beyond the shafts' uniform twist); energy per cycle W in (f p-bar)^2 a^3 / G; A the
+torque range.
 Every number comes from the model table (``models.MODELS``: each model's ``monotonic`` numbers and
 ``energy_per_cycle``) and ``model_comparison.apparent_friction_ratio`` (f_fit / f of a friction read
 from partial-slip dissipation with the wrong model; a gross-slip plateau gives the true f under
@@ -23,8 +24,12 @@ from torsional_contact.typeset import sci
 NAMES = ("cylinder", "half-space", "hertz", "flat-punch")
 #: The fits shown: (true model, assumed model).
 FITS = (("cylinder", "half-space"), ("hertz", "half-space"), ("flat-punch", "half-space"), ("hertz", "cylinder"))
-#: |f_fit / f - 1| above which a wrong-model fit is said to matter (the window of the text).
+#: |f_fit / f - 1| above which a wrong-model fit is said to matter (the band of the figure).
 MATTERS = 0.05
+#: Fractions A / (2 T*_gs) of the true contact's gross-slip range at which the text quotes f_fit / f.
+QUOTED = (0.1, 0.5, 0.8, 0.9, 0.95)
+#: The fraction that stands for the gross-slip limit A -> 2 T*_gs (the fit at spinning itself is degenerate).
+GROSS_LIMIT = 1 - 1e-6
 
 
 def _twist(contact, tau):
@@ -73,41 +78,55 @@ def main():
         truth = contacts[true]
         kappa = np.array([apparent_friction_ratio(2 * truth.gross_slip_torque * x, true_model=true,
                                                   assumed_model=assumed) for x in fractions])
+        quoted = {x: apparent_friction_ratio(2 * truth.gross_slip_torque * x, true_model=true, assumed_model=assumed)
+                  for x in (*QUOTED, GROSS_LIMIT)}
         fits.append({"true": true, "assumed": assumed, "fraction": fractions, "ratio": kappa,
-                     "window": _window(fractions, kappa)})
+                     "window": _window(fractions, kappa), "quoted": quoted})
 
     # ------------------------------------------------------------------ figure
     use_style(a.style)
-    fig, axes = subplots(2, 2, figsize=(6.1, 5.2), layout="constrained")  # printed at its size (text width 6.3 in)
+    fig, axes = subplots(2, 2, figsize=(6.2, 5.4), layout="constrained")  # printed at its size (text width 6.3 in)
     (ax_twist, ax_b), (ax_energy, ax_fit) = axes
     labels = {"cylinder": "cylinders", "half-space": "half-spaces, uniform $p$", "hertz": "Hertz (sphere on flat)",
               "flat-punch": "rigid flat punch"}
+    colours = {name: f"C{k}" for k, name in enumerate(NAMES)}
     for name, cv in curves.items():
-        ax_twist.plot(cv["twist"], cv["torque"], label=labels[name])
-        ax_b.plot(cv["torque"] / contacts[name].gross_slip_torque, cv["stick_radius"], label=labels[name])
+        ax_twist.plot(cv["twist"], cv["torque"], color=colours[name], label=labels[name])
+        ax_b.plot(cv["torque"] / contacts[name].gross_slip_torque, cv["stick_radius"], color=colours[name])
         positive = cv["energy"] > 0
-        ax_energy.loglog(cv["range"][positive], cv["energy"][positive], label=labels[name])
-    ax_twist.set_xlim(0, 3.0)
-    ax_twist.set_xlabel(r"relative twist $\mu\varphi/(f\bar p)$")
+        ax_energy.loglog(cv["range"][positive], cv["energy"][positive], color=colours[name])
+    # margins round the data: the stuck parts (vertical in (a), b = 1 in (b)) are not hidden by the frame
+    ax_twist.set_xlim(-0.12, 3.0)
+    ax_twist.set_ylim(-0.06, 1.7)
+    ax_twist.set_xlabel(r"relative twist $G\varphi/(f\bar p)$")
     ax_twist.set_ylabel(r"torque $T^* = 2T/(fFa)$")
     ax_twist.set_title("(a) monotonic loading", fontsize=9)
-    ax_twist.legend(fontsize=7.5, loc="lower right")
+    ax_b.set_xlim(-0.04, 1.04)
+    ax_b.set_ylim(0.15, 1.06)
     ax_b.set_xlabel(r"$T^*/T^*_\mathrm{gs}$ (fraction of the gross-slip torque)")
     ax_b.set_ylabel(r"stick radius $b/a$")
     ax_b.set_title("(b) slip onset and spread", fontsize=9)
     ax_energy.set_xlabel(r"torque range $A = \Delta T^*$")
-    ax_energy.set_ylabel(r"energy per cycle $W\mu/((f\bar p)^2a^3)$")
-    ax_energy.set_ylim(1e-10, 1e3)
+    ax_energy.set_ylabel(r"energy per cycle $WG/((f\bar p)^2a^3)$")
+    ax_energy.set_ylim(1e-10, 3e2)
     ax_energy.set_title("(c) energy per cycle (Masing)", fontsize=9)
+    # one legend of the models for (a)-(c), above the panels
+    fig.legend(*ax_twist.get_legend_handles_labels(), loc="outside upper center", ncol=4, fontsize=7.5,
+               frameon=False)
+    # (d): the colour of the true contact, solid when read as half-spaces, dashed when read as cylinders
+    short = {"cylinder": "cylinders", "half-space": "half-spaces", "hertz": "Hertz", "flat-punch": "punch"}
     for fit in fits:
-        ax_fit.plot(fit["fraction"], fit["ratio"], label=f"{labels[fit['true']]}, fitted as {labels[fit['assumed']]}")
+        ax_fit.plot(fit["fraction"], fit["ratio"], color=colours[fit["true"]],
+                    linestyle="-" if fit["assumed"] == "half-space" else "--",
+                    label=f"{short[fit['true']]} read as {short[fit['assumed']]}")
     ax_fit.axhspan(1 - MATTERS, 1 + MATTERS, color="0.9", zorder=0)
     ax_fit.set_yscale("log")
+    ax_fit.set_xlim(-0.02, 1.02)
     ax_fit.set_xlabel(r"$A/(2T^*_\mathrm{gs})$ of the true contact")
     ax_fit.set_ylabel(r"apparent friction $f_\mathrm{fit}/f$")
     ax_fit.set_title("(d) friction from a wrong-model fit", fontsize=9)
-    ax_fit.set_ylim(1e-2, 2e3)
-    ax_fit.legend(fontsize=7.5, loc="upper left")
+    ax_fit.set_ylim(1e-2, 1e4)  # the top two decades hold the legend, above every curve
+    ax_fit.legend(fontsize=7.5, loc="upper left", labelspacing=0.3)
     save_figure(fig, a.pdf, a.png)
 
     # ------------------------------------------------------------------ data, table, macros
@@ -115,7 +134,9 @@ def main():
         "models": rows,
         "fits": [{"true": f["true"], "assumed": f["assumed"], "fraction": f["fraction"].tolist(),
                   "friction_ratio": [None if math.isinf(k) else float(k) for k in f["ratio"]],
-                  "window": f["window"]} for f in fits],
+                  "window": f["window"],
+                  "quoted": {f"{x:g}": None if math.isinf(k) else float(k) for x, k in f["quoted"].items()}}
+                 for f in fits],
         "matters": MATTERS,
     }, method="model table: monotonic interpolants and W(A) = 4 W_mono(A/2) (Masing); Brent's method for the fits",
         resolution=f"{a.n_points} torques per curve, {a.fit_points} ranges per fit", precision="IEEE double")
@@ -140,15 +161,18 @@ def main():
         values[f"models-{key}-onset"] = f"{r['slip_onset_torque']:.4f}"
         values[f"models-{key}-b-half"] = f"{r['stick_radius_at_half_gross']:.3f}"
         values[f"models-{key}-energy-gross"] = sci(r["energy_at_gross_range"], 3)
+        # where slip starts, as a fraction of the gross-slip range (below it a model dissipates nothing)
+        values[f"models-{key}-onset-fraction"] = f"{r['slip_onset_torque'] / r['gross_slip_torque']:.2f}"
+    # f_fit / f at stated ranges and in the gross-slip limit (not the ends of the sampled grid: the ratio tends to
+    # 0 in small cycles of a Hertzian contact and is unbounded at the onset of the cylinders and the punch);
+    # "--" where no finite friction fits (the true contact dissipates nothing)
     for f in fits:
         key = f"models-fit-{f['true']}-as-{f['assumed']}"
-        finite = f["ratio"][np.isfinite(f["ratio"])]
-        values[f"{key}-min"] = f"{np.min(finite):.3f}" if finite.size else "--"
-        values[f"{key}-max"] = f"{np.max(finite):.3f}" if finite.size else "--"
-        window = f["window"]
-        values[f"{key}-window"] = "none" if window is None else f"{window[0]:.2f}--{window[1]:.2f}"
-        mid = f["ratio"][len(f["ratio"]) // 2]
-        values[f"{key}-mid"] = "--" if math.isinf(mid) else f"{mid:.3f}"
+        for x, k in f["quoted"].items():
+            name = "gross" if x == GROSS_LIMIT else f"{x:g}"
+            values[f"{key}-at-{name}"] = "--" if math.isinf(k) else f"{k:#.3g}"
+        finite = [k for k in (*f["ratio"], f["quoted"][GROSS_LIMIT]) if math.isfinite(k)]
+        values[f"{key}-least-error"] = f"{100 * min(abs(k - 1) for k in finite):.2g}" if finite else "--"
     write_macros(a.macros, values, "workflow/scripts/models_comparison.py")
 
 
