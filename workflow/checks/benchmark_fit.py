@@ -21,11 +21,9 @@ import argparse
 import json
 import pathlib
 import statistics
-import subprocess
 import sys
-import tempfile
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
+from baseline import ROOT, baseline_tree, run_child
 
 CHILD = r"""
 import json, resource, sys, time, warnings
@@ -52,11 +50,7 @@ print(json.dumps({"cpu": cpu, "rss_mb": rss, "friction": fit.friction.value,
 
 
 def _run(src: pathlib.Path, size: int, timeout: float, seed: int | None = None) -> dict:
-    env = {"PYTHONPATH": str(src), "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"}
-    seed = size if seed is None else seed
-    out = subprocess.run([sys.executable, "-c", CHILD, str(size), str(seed)], capture_output=True, text=True, env=env,
-                         timeout=timeout, check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return run_child(src, CHILD, size, size if seed is None else seed, timeout=timeout)
 
 
 def main(argv=None) -> int:
@@ -71,32 +65,24 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.repeats < 1 or args.honesty < 0 or any(size < 100 for size in args.sizes):
         parser.error("--repeats: at least 1; --honesty: at least 0; --sizes: at least 100 samples each")
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = pathlib.Path(tmp)
-        baseline = tmp / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(baseline), args.baseline],
-                       check=True, capture_output=True)
-        try:
-            rows = []
-            for size in args.sizes:
-                runs = {"baseline": [], "current": []}
-                repeats = args.repeats if size < 10_000 else max(1, args.repeats // 5)
-                for _ in range(repeats):
-                    runs["baseline"].append(_run(baseline / "src", size, args.timeout))
-                    runs["current"].append(_run(ROOT / "src", size, args.timeout))
-                row = {"samples": size, "repeats": repeats}
-                for name, results in runs.items():
-                    row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results),
-                                 "peak_rss_mb": statistics.median(r["rss_mb"] for r in results),
-                                 "friction": results[0]["friction"], "interval": results[0]["interval"],
-                                 "z": results[0].get("z"), "warnings": results[0].get("warnings")}
-                row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
-                row["rss_ratio"] = row["current"]["peak_rss_mb"] / row["baseline"]["peak_rss_mb"]
-                rows.append(row)
-                print(json.dumps(row), flush=True)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(baseline)], check=False,
-                           capture_output=True)
+    with baseline_tree(args.baseline) as baseline:
+        rows = []
+        for size in args.sizes:
+            runs = {"baseline": [], "current": []}
+            repeats = args.repeats if size < 10_000 else max(1, args.repeats // 5)
+            for _ in range(repeats):
+                runs["baseline"].append(_run(baseline / "src", size, args.timeout))
+                runs["current"].append(_run(ROOT / "src", size, args.timeout))
+            row = {"samples": size, "repeats": repeats}
+            for name, results in runs.items():
+                row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results),
+                             "peak_rss_mb": statistics.median(r["rss_mb"] for r in results),
+                             "friction": results[0]["friction"], "interval": results[0]["interval"],
+                             "z": results[0].get("z"), "warnings": results[0].get("warnings")}
+            row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
+            row["rss_ratio"] = row["current"]["peak_rss_mb"] / row["baseline"]["peak_rss_mb"]
+            rows.append(row)
+            print(json.dumps(row), flush=True)
     for size in args.sizes if args.honesty else []:
         runs = [_run(ROOT / "src", size, args.timeout, seed=size + k) for k in range(1, args.honesty + 1)]
         worst = {name: max(abs(r["z"][name]) for r in runs if r["z"][name] is not None) for name in runs[0]["z"]

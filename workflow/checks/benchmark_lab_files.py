@@ -19,13 +19,12 @@ import json
 import math
 import pathlib
 import statistics
-import subprocess
 import sys
 import tempfile
 
-from torsional_contact.provenance import write_text
+from baseline import ROOT, baseline_tree, run_child
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
+from torsional_contact.provenance import write_text
 
 CHILD = r"""
 import json, sys, time
@@ -50,13 +49,6 @@ def write_export(path: pathlib.Path, rows: int) -> None:
     write_text(path, "\n".join(lines) + "\n")
 
 
-def _run(src: pathlib.Path, export: pathlib.Path) -> dict:
-    env = {"PYTHONPATH": str(src), "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "PATH": "/usr/bin:/bin"}
-    out = subprocess.run([sys.executable, "-c", CHILD, str(export)], capture_output=True, text=True, env=env,
-                         timeout=600, check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
-
-
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--baseline", default="84f8038", help="the commit whose reader is the baseline")
@@ -65,30 +57,22 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.repeats < 1 or any(rows < 1 for rows in args.rows):
         parser.error("--repeats and --rows: at least 1")
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = pathlib.Path(tmp)
-        baseline = tmp / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(baseline), args.baseline],
-                       check=True, capture_output=True)
-        try:
-            for rows in args.rows:
-                export = tmp / f"export_{rows}.csv"
-                write_export(export, rows)
-                runs = {"baseline": [], "current": []}
-                for _ in range(args.repeats):
-                    runs["baseline"].append(_run(baseline / "src", export))
-                    runs["current"].append(_run(ROOT / "src", export))
-                checksums = {r["checksum"] for results in runs.values() for r in results}
-                if len(checksums) != 1:
-                    raise SystemExit(f"the two readers disagree on {rows} rows: checksums {sorted(checksums)}")
-                row = {"rows": rows, "repeats": args.repeats}
-                for name, results in runs.items():
-                    row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results)}
-                row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
-                print(json.dumps(row), flush=True)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(baseline)], check=False,
-                           capture_output=True)
+    with tempfile.TemporaryDirectory() as tmp, baseline_tree(args.baseline) as baseline:
+        for rows in args.rows:
+            export = pathlib.Path(tmp) / f"export_{rows}.csv"
+            write_export(export, rows)
+            runs = {"baseline": [], "current": []}
+            for _ in range(args.repeats):
+                runs["baseline"].append(run_child(baseline / "src", CHILD, export))
+                runs["current"].append(run_child(ROOT / "src", CHILD, export))
+            checksums = {r["checksum"] for results in runs.values() for r in results}
+            if len(checksums) != 1:
+                raise SystemExit(f"the two readers disagree on {rows} rows: checksums {sorted(checksums)}")
+            row = {"rows": rows, "repeats": args.repeats}
+            for name, results in runs.items():
+                row[name] = {"cpu_s": statistics.median(r["cpu"] for r in results)}
+            row["cpu_ratio"] = row["current"]["cpu_s"] / row["baseline"]["cpu_s"]
+            print(json.dumps(row), flush=True)
     return 0
 
 
