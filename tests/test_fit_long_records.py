@@ -1,8 +1,9 @@
 """Records of many cycles: the loop fit says that its intervals do not hold there (``record_checks``, "Many cycles").
 
-The bias is measured, not assumed: a torque-controlled partial-slip record of the library's synthetic rig, whose
-noise-free fit returns the rig's friction to 1e-9 (the model is exact), gives over 20 cycles a friction interval
-that excludes the truth; the warning must be there, and absent on the two-cycle record whose intervals cover.
+The bias is measured, not assumed (docs/fitting.md): a torque-controlled partial-slip record of the library's
+synthetic rig, whose noise-free fit returns the rig's friction to 1e-9 (the model is exact), gives over 20 cycles a
+friction interval that excludes the truth, from the twist noise; the warning must be there, and absent on the
+two-cycle record whose intervals cover.
 """
 
 from __future__ import annotations
