@@ -403,3 +403,36 @@ def test_whole_column_conversion_is_the_field_by_field_one(cells, comma):
             table.column(0, "c")
     else:
         np.testing.assert_array_equal(table.column(0, "c"), np.array(expected))
+
+
+def test_per_cycle_plot_shows_each_cycle_and_its_friction(tmp_path):
+    """With --per-cycle the plot has the cycles' loops beside the record and a row of f against the cycle number:
+    the cycles are found by the sample ranges the per-cycle fit reports (start and end, both in the cycle)."""
+    from torsional_contact.fitting.synthetic import Rig, noisy, twist_controlled
+    from torsional_contact.io.fit_report import _cycles, cycle_friction
+
+    if importlib.util.find_spec("matplotlib") is None:
+        pytest.skip("matplotlib (the plots extra) not installed")
+    rig = Rig(radius=0.005, normal_force=1000.0, friction=0.6, shear_modulus=80e9, compliance=4e-4, offset=1e-4)
+    torque, twist = noisy(*twist_controlled(rig, 2.5e-3, cycles=4, samples_per_cycle=120),
+                          0.005 * 4.0, 1e-5, np.random.default_rng(5))
+    path = tmp_path / "cycles.csv"
+    path.write_text("torque [N m],twist [rad]\n" + "".join(f"{float(q)!r},{float(w)!r}\n"
+                                                           for q, w in zip(torque, twist, strict=True)))
+    plots = {name: tmp_path / f"{name}.png" for name in ("whole", "per_cycle")}
+    whole = _fit_json(path, "--plot", str(plots["whole"]))
+    cycles = _fit_json(path, "--per-cycle", "--plot", str(plots["per_cycle"]))
+    spans = _cycles(cycles)
+    assert len(spans) == len(cycles["cycles"]) >= 2
+    assert all(first < stop <= torque.size for first, stop in spans)
+    assert _cycles(whole) == [] and cycle_friction(whole) == []
+    per_cycle = cycle_friction(cycles)
+    assert [n for n, *_ in per_cycle] == [c["cycle"] for c in cycles["cycles"]]
+    for (_, value, lo, hi), cycle in zip(per_cycle, cycles["cycles"], strict=True):
+        assert value == cycle["friction"]["value"] and [lo, hi] == cycle["friction"]["interval"]
+
+    def height(png):  # the PNG header's height (rows of pixels)
+        return int.from_bytes(png.read_bytes()[20:24], "big")
+
+    # three rows of panels (3.2 in each) against two, at 150 dpi
+    assert height(plots["per_cycle"]) == round(3 * 3.2 * 150) and height(plots["whole"]) == round(2 * 3.2 * 150)

@@ -233,8 +233,9 @@ def add_fit_output_options(p) -> None:
     group = p.add_argument_group("outputs")
     group.add_argument("--confidence", type=float, default=0.95,
                        help="level of the intervals, in (0, 1) (default 0.95); the slip test's level is 1 - it")
-    group.add_argument("--plot", metavar="FILE", help="the loop with the fitted model and the normalised residuals "
-                       "(.png, .pdf or .svg; needs matplotlib, the plots extra)")
+    group.add_argument("--plot", metavar="FILE", help="the loop with the fitted model and the normalised residuals; "
+                       "with --per-cycle also each cycle's loop and f against the cycle number (.png, .pdf or .svg; "
+                       "needs matplotlib, the plots extra)")
     group.add_argument("--residuals", metavar="FILE", help="every sample with the fitted torque, its residual and the "
                        "normalised residual (CSV; .npz or .npy: binary)")
     group.add_argument("--parents", action="store_true", help="create the missing directories of --plot and "

@@ -18,7 +18,8 @@ Units: torque N m, twist rad, time s, as in ``fitting``.
   about standard normal where the model and the noise levels hold.
 * ``plot_fit(path, ...)``: the loop with the fitted model, and the normalised residuals against
   the sample number (matplotlib: the ``plots`` extra); one panel per cycle beside them when the
-  record has several cycles.
+  record has several cycles, and with a per-cycle fit (``per_cycle``) the friction coefficient of
+  each cycle against its number, with its interval (a lower bound where the cycle gives only one).
 * ``fit_provenance(report)``: the input's report plus the package versions (``provenance``).
 """
 
@@ -126,15 +127,32 @@ def write_residuals(path, table: dict, *, inputs=(), parents: bool = False) -> N
 
 
 def _cycles(record: dict) -> list[tuple[int, int]]:
-    """(first, last + 1) sample of each cycle the record reports with sample ranges, else []."""
+    """(first, last + 1) sample of each cycle the record reports with sample ranges, else [].
+
+    A cycle names its samples by ``start`` and ``end`` (both in it: ``per_cycle``), ``first_sample`` and
+    ``last_sample`` (both in it), or ``start`` and ``stop`` (one past the last)."""
     spans = []
     for cycle in record.get("cycles") or []:
         if isinstance(cycle, dict):
             first = cycle.get("first_sample", cycle.get("start"))
-            last = cycle.get("last_sample", cycle.get("stop"))
+            last = cycle.get("last_sample", cycle.get("end", cycle.get("stop")))
+            inclusive = "last_sample" in cycle or "end" in cycle
             if isinstance(first, int) and isinstance(last, int) and last > first:
-                spans.append((first, last + 1 if "last_sample" in cycle else last))
+                spans.append((first, last + 1 if inclusive else last))
     return spans
+
+
+def cycle_friction(record: dict) -> list[tuple[int, float | None, float | None, float | None]]:
+    """(cycle number, f, lower end, upper end) of each cycle of a per-cycle fit that gives f or a bound on it."""
+    out = []
+    for number, cycle in enumerate(record.get("cycles") or [], start=1):
+        friction = cycle.get("friction") if isinstance(cycle, dict) else None
+        if not isinstance(friction, dict):
+            continue
+        lo, hi = (list(friction.get("interval") or [None, None]) + [None, None])[:2]
+        if friction.get("value") is not None or lo is not None:
+            out.append((int(cycle.get("cycle", number)), friction.get("value"), lo, hi))
+    return out
 
 
 def plot_fit(path, table: dict, record: dict, *, title: str, inputs=(), parents: bool = False) -> None:
@@ -151,8 +169,10 @@ def plot_fit(path, table: dict, record: dict, *, title: str, inputs=(), parents:
     spikes = table["spike"].astype(bool)
     spans = _cycles(record)
     extra = min(len(spans), 6) if len(spans) > 1 else 0
-    figure = plt.figure(figsize=(7.0 + 2.4 * math.ceil(extra / 2), 6.4), constrained_layout=True)
-    grid = figure.add_gridspec(2, 1 + math.ceil(extra / 2), width_ratios=[3.0] + [1.0] * math.ceil(extra / 2))
+    per_cycle = cycle_friction(record)
+    rows = 3 if per_cycle else 2
+    figure = plt.figure(figsize=(7.0 + 2.4 * math.ceil(extra / 2), 3.2 * rows), constrained_layout=True)
+    grid = figure.add_gridspec(rows, 1 + math.ceil(extra / 2), width_ratios=[3.0] + [1.0] * math.ceil(extra / 2))
     loop = figure.add_subplot(grid[0, 0])
     scale = 1e3  # mrad: the twists of a loop
     loop.plot(twist * scale, torque, ".", ms=2.5, color="0.55", label="measured")
@@ -178,12 +198,40 @@ def plot_fit(path, table: dict, record: dict, *, title: str, inputs=(), parents:
         axis.set_title(f"cycle {k + 1}", fontsize=8)
         axis.set_xlabel("$\\theta$ [mrad]", fontsize=8)
         axis.tick_params(labelsize=7)
+    if per_cycle:
+        whole = record.get("friction") if isinstance(record.get("friction"), dict) else {}
+        _plot_cycle_friction(figure.add_subplot(grid[2, :]), per_cycle, whole.get("value"))
     suffix = os.path.splitext(os.fspath(path))[1].lower()
     try:
         with atomic_path(path, suffix, label="--plot", inputs=inputs, parents=parents) as tmp:
             figure.savefig(tmp, format=suffix[1:], dpi=150)
     finally:
         plt.close(figure)
+
+
+def _plot_cycle_friction(axis, per_cycle, whole: float | None) -> None:
+    """f of each cycle with its interval; a cycle that gives only a lower bound as an upward triangle there; the
+    whole record's f (``whole``, if any) as a line."""
+    from matplotlib.ticker import MaxNLocator
+
+    valued = [(n, v, lo, hi) for n, v, lo, hi in per_cycle if v is not None]
+    bounded = [(n, lo) for n, v, lo, _ in per_cycle if v is None and lo is not None]
+    if valued:
+        numbers = np.array([n for n, *_ in valued], dtype=float)
+        values = np.array([v for _, v, _, _ in valued], dtype=float)
+        lower = np.array([v - lo if lo is not None else 0.0 for _, v, lo, _ in valued])
+        upper = np.array([hi - v if hi is not None else 0.0 for _, v, _, hi in valued])
+        axis.errorbar(numbers, values, yerr=[lower, upper], fmt="o", ms=3.5, color="C0", capsize=2,
+                      label="f of the cycle, with its interval")
+    if bounded:
+        axis.plot([n for n, _ in bounded], [lo for _, lo in bounded], "^", ms=5, color="C1",
+                  label="only a lower bound")
+    if whole is not None:
+        axis.axhline(whole, color="0.5", lw=0.9, ls="--", label="f of the whole record")
+    axis.xaxis.set_major_locator(MaxNLocator(integer=True))
+    axis.set_xlabel("cycle")
+    axis.set_ylabel("friction coefficient $f$")
+    axis.legend(loc="best", fontsize=8)
 
 
 # --------------------------------------------------------------------------- the text report
