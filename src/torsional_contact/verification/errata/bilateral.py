@@ -185,12 +185,13 @@ def check_bilateral():
         entry(
             "6",
             "second invariant J2 of the stress tensor (sigma_zz = -p0, sigma_zt = 2T/(pi a^3) at r = a) "
-            "from its eigenvalues, J2/k^2 vs left side of (6), 20 random (T, F, a, k), double" + double_rule(),
+            "from its eigenvalues, J2/tau_Y^2 vs left side of (6) (the original's k is tau_Y), 20 random "
+            "(T, F, a, tau_Y), double" + double_rule(),
             disc6,
             verdict_formula(disc6, tol=TOL_DOUBLE),
-            "Von Mises J2 = k^2 at the outer radius of the bilateral field; slip only lowers the interface "
+            "Von Mises J2 = tau_Y^2 at the outer radius of the bilateral field; slip only lowers the interface "
             f"shear, so (6) also bounds the split shaft (agreement {plain_sci(disc6)}).",
-            r"The von Mises condition $J_2 = k^2$ at $r = a$ of the bilateral field is (6); slip only lowers the "
+            r"The von Mises condition $J_2 = \tau_Y^2$ at $r = a$ of the bilateral field is (6); slip only lowers the "
             r"interface shear, so (6) also bounds the split shaft.",
         ),
     ]

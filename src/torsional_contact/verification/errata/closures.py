@@ -51,7 +51,7 @@ _LATEX_NAMES = {
 FIELD_RADIUS = 0.6
 #: Stick radii at which 'T* above spinning' is looked for (all resolved by N = 145).
 SMALL_RADII = (0.05, 0.1, 0.2, 0.3, 0.4)
-#: Residual weightings kappa of the weighting row (lam_n (lam_n - kappa) in eq. 37).
+#: Residual weightings w of the weighting row (lam_n (lam_n - w) in eq. 37).
 WEIGHTS = (0.5, 1.0, 2.0)
 
 
@@ -192,7 +192,7 @@ def check_closures():
             f"({', '.join(CLOSURE_NAMES.values())}); for each: max T* over b in {SMALL_RADII} (N = {N_PAPER}), "
             f"alpha = u/r on the stick disc, the least slip on b < r < b + 0.05 and the largest traction on "
             f"0.7 <= r <= 0.95 at b = {FIELD_RADIUS}, the relative spread of T*({FIELD_RADIUS}) over the weightings "
-            f"kappa in {WEIGHTS}, and max_b |T* - T*_exact| / T*_exact over b in {RADII} against {TRUTH}; incorrect "
+            f"w in {WEIGHTS}, and max_b |T* - T*_exact| / T*_exact over b in {RADII} against {TRUTH}; incorrect "
             f"if under every closure the error at N = {N_CONVERGED} exceeds {threshold('CONSISTENCY_FACTOR')} times "
             "that of the complete weak form with the same closure",
             best,

@@ -149,8 +149,8 @@ def check_weak_form_passage():
 def weighted_system(stick_radius: float, method: str, lam: np.ndarray, weight: float):
     """(matrix, rhs_torque, rhs_constant) of the weak form (37)-(38) with the stick residual weighted by ``weight``.
 
-    The factor lam_n (lam_n - 1) of eq. (37) becomes lam_n (lam_n - kappa), kappa = ``weight`` (displacements
-    measured in f p0 L / mu, L = a / kappa); "complete" borders the system with the rigid-rotation mode.
+    The factor lam_n (lam_n - 1) of eq. (37) becomes lam_n (lam_n - w), w = ``weight`` (displacements
+    measured in f p0 L / mu, L = a / w); "complete" borders the system with the rigid-rotation mode.
     ``lam``: the zeros of J2 (the Dini wavenumbers).  Double precision.
     """
     b, k = float(stick_radius), float(weight)
@@ -175,9 +175,9 @@ def weighted_system(stick_radius: float, method: str, lam: np.ndarray, weight: f
 def weighted_torque(stick_radius: float, method: str, n_terms: int, weight: float) -> float:
     """T*(b) from the weak form with the stick (displacement) residual weighted by ``weight``.
 
-    weight = 1 is eq. (37)-(38) (displacement in units f p0 a / mu); weight = kappa
-    corresponds to measuring displacements in f p0 L / mu with L = a / kappa, i.e. the
-    factor lam_n (lam_n - 1) becomes lam_n (lam_n - kappa) (``weighted_system``).  Double precision.
+    weight = 1 is eq. (37)-(38) (displacement in units f p0 a / mu); weight = w
+    corresponds to measuring displacements in f p0 L / mu with L = a / w, i.e. the
+    factor lam_n (lam_n - 1) becomes lam_n (lam_n - w) (``weighted_system``).  Double precision.
     """
     b = float(stick_radius)
     lam = bessel_j2_zeros(n_terms)
@@ -207,7 +207,7 @@ def check_weighting():
     return [
         entry(
             "Sec.3-weighting",
-            f"T*(b = 0.6) with the stick residual weighted by kappa in {{0.5, 1, 2}} (lam_n (lam_n - kappa) in "
+            f"T*(b = 0.6) with the stick residual weighted by w in {{0.5, 1, 2}} (lam_n (lam_n - w) in "
             f"(37)); relative spread at N = {N_PAPER} and {N_CONVERGED} (the statement is about the limit of large "
             f"N), published vs complete, and the distance of each T* from {TRUTH}; incorrect if the published "
             f"spread at N = {N_CONVERGED} exceeds max({threshold('CONSISTENCY_FACTOR')} x complete, "
@@ -215,8 +215,8 @@ def check_weighting():
             pub,
             verdict,
             f"The weight of the displacement residual against the traction residual is a free choice "
-            f"(kappa = 1: displacements in f p0 a/mu).  Published eq. (38) gives T*(0.6) = "
-            f"{published[0]:.4f}, {published[1]:.4f}, {published[2]:.4f} for kappa = 0.5, 1, 2 (spread {pub:.1e}, "
+            f"(w = 1: displacements in f p0 a/mu).  Published eq. (38) gives T*(0.6) = "
+            f"{published[0]:.4f}, {published[1]:.4f}, {published[2]:.4f} for w = 0.5, 1, 2 (spread {pub:.1e}, "
             f"not shrinking with N; up to {error[f'published_{N_CONVERGED}']:.1e} from the truth {truth:.5f}); the "
             f"complete form gives {values[f'complete_{N_CONVERGED}'][1]:.5f} with spread {comp:.1e} (within "
             f"{error[f'complete_{N_CONVERGED}']:.1e} of the truth).  The published result depends on an arbitrary "
@@ -224,7 +224,7 @@ def check_weighting():
             "distributes.  This judges the scheme (21) + (38), not the algebra of (38) (row 33-38); closed by the "
             "torque of the traction present, the printed scheme loses the weighting dependence but converges to a "
             "wrong T* (row Sec.3-closure)." + CLOSURE_TAG,
-            rf"Weighting the stick residual by $\kappa = 0.5$, $1$, $2$ (an arbitrary choice of length unit) moves "
+            rf"Weighting the stick residual by $w = 0.5$, $1$, $2$ (an arbitrary choice of length unit) moves "
             rf"the reconstructed printed scheme's $T^*(0.6)$ from ${fixed(published[0], 4)}$ to "
             rf"${fixed(published[2], 4)}$ even at "
             rf"$N = {N_CONVERGED}$, while the complete form stays within "
