@@ -1,9 +1,11 @@
-"""Records of many cycles: the loop fit says that its intervals do not hold there (``record_checks``, "Many cycles").
+"""Records of many cycles that cannot be smoothed: the loop fit says that its intervals may not hold there
+(``record_checks``, "Many cycles").
 
-The bias is measured, not assumed (docs/fitting.md): a torque-controlled partial-slip record of the library's
-synthetic rig, whose noise-free fit returns the rig's friction to 1e-9 (the model is exact), gives over 20 cycles a
-friction interval that excludes the truth, from the twist noise; the warning must be there, and absent on a
-two-cycle record (whose intervals were found to cover).
+The bias is measured, not assumed (docs/fitting.md): on torque-controlled partial-slip records of the library's
+synthetic rig at 100 samples per cycle (too few for the torque to be fitted as a smooth function of time,
+``fitting.smoothing``) the functional estimator's bias does not fall with the number of cycles while the intervals
+do; the warning must be there over more than ``MANY_REVERSALS`` reversals, and absent on a two-cycle record (whose
+intervals were found to cover) and on a long record whose torque was smoothed (``tests/test_fit_smoothing.py``).
 """
 
 from __future__ import annotations

@@ -58,7 +58,7 @@ from .profile import covariance, is_large
 from .results import Estimate
 
 __all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "score_statistics",
-           "corrected_record", "corrected_fit"]
+           "corrected_record", "corrected_fit", "widened", "widened_modulus"]
 
 #: The defects, in the order of their columns: (name, unit of the size, unit without a time column).
 KINDS = (("torque offset", "N m", "N m"), ("twist drift", "rad/s", "rad per sample"), ("lag", "s", "samples"))
@@ -281,7 +281,7 @@ def _virgin_statistic(virgin, steady, start: int) -> float:
     return max(common - s_steady, 0.0) / scale2
 
 
-def _widened(estimate: Estimate, ratio: float) -> Estimate:
+def widened(estimate: Estimate, ratio: float) -> Estimate:
     if estimate.value is None or not ratio > 1.0:
         return estimate
     lo, hi = estimate.interval
@@ -372,7 +372,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         joint = np.diag(covariance(with_defects, scale2))[:jac.shape[1]]
         ratios = np.sqrt(np.where(core > 0, joint / core, 1.0))
     if final.p is None:  # a straight loop: C is the line's first parameter
-        result = replace(result, compliance=_widened(result.compliance, float(ratios[0])))
+        result = replace(result, compliance=widened(result.compliance, float(ratios[0])))
     else:
         p = final.p
         y_gradient = np.zeros(jac.shape[1])
@@ -381,19 +381,19 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         cov_joint = covariance(with_defects, scale2)[:jac.shape[1], :jac.shape[1]]
         y_core, y_joint = float(y_gradient @ cov_core @ y_gradient), float(y_gradient @ cov_joint @ y_gradient)
         y_ratio = math.sqrt(y_joint / y_core) if y_core > 0 else 1.0
-        result = replace(result, friction=_widened(result.friction, float(ratios[0])),
-                         shear_modulus=_widened_modulus(result.shear_modulus, y_ratio),
-                         compliance=_widened(result.compliance, float(ratios[2])))
+        result = replace(result, friction=widened(result.friction, float(ratios[0])),
+                         shear_modulus=widened_modulus(result.shear_modulus, y_ratio),
+                         compliance=widened(result.compliance, float(ratios[2])))
     return replace(final, result=replace(result, warnings=tuple(notes)))
 
 
-def _widened_modulus(estimate: Estimate, ratio: float) -> Estimate:
+def widened_modulus(estimate: Estimate, ratio: float) -> Estimate:
     """G's interval widened by ``ratio`` in 1/G (linear in the fitted y = kappa C)."""
     if estimate.value is None or not ratio > 1.0:
         return estimate
     inverse = Estimate(1.0 / estimate.value, None,
                        tuple(None if e is None else 1.0 / e for e in estimate.interval[::-1]))
-    wide = _widened(inverse, ratio)
+    wide = widened(inverse, ratio)
     lo, hi = wide.interval
     interval = (None if hi is None or hi <= 0 else 1.0 / hi, None if lo is None or lo <= 0 else 1.0 / lo)
     return replace(estimate, stderr=None if estimate.stderr is None else estimate.stderr * ratio, interval=interval)

@@ -104,15 +104,12 @@ a check of the profile intervals at the cost of N fits.
 
 Limits
 ------
-The foot points make the residuals exact in the noise; what remains is the bias of the
-functional maximum-likelihood estimator itself (of order s^2 times the curvature of the loop, in
-noise units), which grows with the twist noise against the contact's twist: in partial slip at
-1e-5 rad it is about 0.4 of the half-width of the f interval, at 4e-5 rad about 0.7, and the
-coverage drops towards 90 % (the coverage study, ``workflow/scripts/friction_test_coverage.py``,
-measures it per scenario).  A loop that barely slips against the noise gives a bound on f, not a
-value; a modulus whose contact twist (k omega, tens of microradians in partial slip) is buried in
-the twist noise gives bounds on G.  A fit takes about 0.05-0.5 s for a few hundred samples (the
-flat profiles of noisy partial-slip loops cost the most).
+What remains is the functional estimator's own bias (of order the product of the two noise levels
+times the loop's curvature): in partial slip at 1e-5 rad about 0.4 of the half-width of the f
+interval on a short record; on long records it would outgrow the intervals, and is taken out where
+the torque is fitted as a smooth function of time (``fitting.smoothing``; else ``many cycles``,
+``record_checks``).  A loop that barely slips against the noise gives a bound on f, not a value; a
+contact twist buried in the twist noise gives bounds on G.  A few hundred samples take 0.05-0.5 s.
 """
 
 from __future__ import annotations
@@ -135,6 +132,7 @@ from .record_checks import checked_time, many_reversals_note, prepared_record
 from .results import Estimate, LoopFit
 from .samples import checked_loop
 from .slip_test import GRID, critical_value, path_length
+from .smoothing import smoothed_torque, widened_for_smoothing
 from .starts import (  # noqa: F401 - the starting points' names, as the tests and the docstring use them
     PLATEAU_CLEARANCE,
     PLATEAU_RESOLVED,
@@ -147,6 +145,7 @@ from .starts import (  # noqa: F401 - the starting points' names, as the tests a
     _start,
     _stick_equivalent,
     _stick_line,
+    off_the_bound,
 )
 
 __all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX", "Fitted"]
@@ -245,10 +244,13 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
             raise ValueError("gauge_length needs shear_modulus (the shafts' L / (G J) is taken out of the compliance)")
         shaft_compliance(contact, a, modulus, length)  # a model whose bodies are not shafts: ValueError
     settings = (a, force, confidence, bootstrap, seed, estimated, contact)
-    fitted = _fit_prepared(record.torque, record.twist, record.reversals, record.torque_noise, record.twist_noise,
-                           list(record.warnings), record.spikes, settings)
+    smooth = smoothed_torque(clock, record.torque, record.reversals, record.torque_noise)  # ``fitting.smoothing``
+    whole = record if smooth is None else replace(record, torque=smooth.torque, torque_noise=smooth.noise)
+    fitted = _fit_prepared(whole.torque, whole.twist, whole.reversals, whole.torque_noise, whole.twist_noise,
+                           list(whole.warnings), whole.spikes, settings)
     if check_defects:
-        fitted = defects.corrected_fit(fitted, clock, record, settings, _fit_prepared, time is not None)
+        fitted = defects.corrected_fit(fitted, clock, whole, settings, _fit_prepared, time is not None)
+    fitted = widened_for_smoothing(fitted, smooth)
     result = fitted.result
     if modulus is not None:
         reach = REVERSAL_REACH * math.hypot(record.twist_noise, float(result.compliance.value or 0.0)
@@ -257,7 +259,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
     if per_cycle:
         clock = clock if time is not None else None
         result = replace(result, cycles=tuple(cycles_with_progress(record, settings, _fit_prepared, clock)))
-    note = many_reversals_note(record.reversals.size, result)
+    note = many_reversals_note(record.reversals.size, result, smooth is not None)
     return result if note is None else replace(result, warnings=(*result.warnings, note))
 
 
@@ -309,6 +311,8 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     p_alt, s_alt, result_alt = profiles.fit(model, p_line, lower, upper)
     if s_alt < s_full:
         p, s_full, result = p_alt, s_alt, result_alt
+    p, s_full, result = off_the_bound(model, (p, s_full, result), lines, twist[reversal_index], peak, lower, upper,
+                                      KAPPA_MAX)
     jacobian = result.jac
     scale2 = s_full / dof
     straight = (s_stick - s_full) / scale2  # LR of the straight loop: the profile of T_s above the largest torque

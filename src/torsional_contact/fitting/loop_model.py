@@ -44,9 +44,10 @@ scale without the Neyman-Scott halving of the 2N residuals of the full problem.
 Turning points
 --------------
 The memory rules start every branch at a turning point (U_j, T_j), T_j = g(U_j) on the branch that
-arrives there.  The turning point is the true state of the reversal's own sample (the extreme of
-the measured twist; at the sampling rates of a loop the drive turns within half a sampling step of
-it, where the twist differs from its extreme by a second-order amount far below the noise), so
+arrives there.  The turning point is the true state of the reversal's own sample (the sample at the
+vertex of the turning in time, ``samples.refined_reversals``, chosen without looking at that sample's
+own noise; the drive turns within about a sampling step of it, where the twist differs from its
+extreme by a second-order amount far below the noise), so
 that sample keeps both its residuals, (T_rev - T_j) / s_T and (theta_rev - U_j) / s_theta, with U_j
 in the place of its foot point.  Left free, the twists at the reversals would each give the branch
 that follows an offset of its own wherever the loop slips at its tips: extra parameters that fit

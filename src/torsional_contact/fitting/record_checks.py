@@ -42,16 +42,20 @@ sign is inverted (or the channels' order), which no fit can repair.
 
 Many cycles
 -----------
-The orthogonal-distance fit estimates the true twist of every sample (its foot point); with noise
-in the twist the curvature of the loop, which carries the slip torque, is biased (the bias of the
-errors-in-variables functional model, which does not fall with the record's length), while the
-intervals shrink like one over the square root of it.  Measured on torque-controlled partial-slip
-records of the synthetic rig (T* 1.3, 100 samples per cycle, eight seeds): with twist noise alone
-(1e-5 rad) f is biased by +4 % at 2 cycles (inside the intervals) and +7 % at 20 cycles (2.6 to 8.7
-standard errors); with torque noise alone (0.5 % of the range) by -0.02 % at 20 cycles.  On the
-independent rig generator, 50 cycles: f +1.3 % and G -24 %, 6.6 and 7.5 standard errors
-(docs/fitting.md).  ``many_reversals_note`` says so for a record with more than ``MANY_REVERSALS``
-reversals whose fit gives a friction value.
+Two biases of the fit do not fall with the record's length while its intervals shrink like one over
+the square root of it.  The first came from the reversals (the noisy extreme of the twist as the
+turning point's sample; ``samples.refined_reversals`` takes the vertex of the turning instead).  The
+second is the errors-in-variables functional model's own, of the order of the product of the two
+channels' noise levels times the loop's curvature: it is taken out where the torque can be fitted as a
+smooth function of time (``fitting.smoothing``: records of a few hundred samples per branch or more).
+Where it cannot (fewer samples per branch, or a torque that is not smooth on the spline's scale) a
+record with more than ``MANY_REVERSALS`` reversals whose fit gives a friction value carries the note of
+``many_reversals_note``.  Measured (synthetic rig, torque-controlled partial slip at T* 1.3, 100
+samples per cycle, noise 0.5 % of the torque range and 1e-5 rad, 20 cycles, eight seeds): f was
+1.2 standard errors high on average before the reversals were refined and 0.5 after (0.45 with the
+true reversal samples); on the independent rig generator at 10^5 samples (50 cycles at 2000 samples per
+cycle) f and G were 5-6 and 5-8 standard errors off with the reversals refined and the torque as sampled,
+within 1.1 with the torque smoothed (docs/fitting.md).
 """
 
 from __future__ import annotations
@@ -63,7 +67,7 @@ import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 
 from .. import units
-from .samples import MIN_SAMPLES, noise_level, reversal_threshold, turning_points
+from .samples import MIN_SAMPLES, noise_level, refined_reversals, reversal_threshold, turning_points
 
 __all__ = ["PreparedRecord", "prepared_record", "checked_time", "RATIO_FLOOR", "SPIKE_LEVEL", "SIGN_LEVEL",
            "quantisation_step", "noise_floor", "find_spikes", "loop_work", "check_sign", "MANY_REVERSALS",
@@ -193,7 +197,7 @@ def prepared_record(torque, twist, torque_noise: float | None = None, twist_nois
     s_theta = noise_level(twist) if twist_noise is None else float(twist_noise)
     tiny_t, tiny_theta = 1e-12 * float(np.ptp(torque)), 1e-12 * float(np.ptp(twist))
     s_t, s_theta = max(s_t, tiny_t), max(s_theta, tiny_theta)
-    reversals = turning_points(twist, reversal_threshold(twist, s_theta))
+    reversals = _reversals(torque, twist, s_t, s_theta)
     if check:
         check_sign(torque, twist, reversals, s_t, s_theta)
     slope = float(np.polyfit(torque, twist, 1)[0])
@@ -208,9 +212,16 @@ def prepared_record(torque, twist, torque_noise: float | None = None, twist_nois
                 notes.append(f"noise floor: the {name} channel's estimated noise ({raw:.3g}) is below its resolution "
                              f"or far below the other channel's; {level:.3g} is used (state it with "
                              f"--{name}-noise)")
-        if s_theta != raw_theta:
-            reversals = turning_points(twist, reversal_threshold(twist, s_theta))
+        if (s_t, s_theta) != (raw_t, raw_theta):
+            reversals = _reversals(torque, twist, s_t, s_theta)
     return PreparedRecord(torque, twist, s_t, s_theta, reversals, kept, int(spikes.sum()), tuple(notes))
+
+
+def _reversals(torque, twist, s_t: float, s_theta: float) -> np.ndarray:
+    """The reversals of the twist (``samples.turning_points``), each at the vertex of its turning
+    (``samples.refined_reversals``)."""
+    threshold = reversal_threshold(twist, s_theta)
+    return refined_reversals(torque, twist, turning_points(twist, threshold), threshold, s_t, s_theta)
 
 
 def checked_time(time, n: int) -> np.ndarray:
@@ -228,10 +239,13 @@ def checked_time(time, n: int) -> np.ndarray:
 MANY_REVERSALS = 20
 
 
-def many_reversals_note(reversals: int, result) -> str | None:
-    """The warning for a fit of ``reversals`` reversals that gives a friction value (module docstring), or None."""
-    if reversals <= MANY_REVERSALS or result.friction.value is None or not result.friction.identified:
+def many_reversals_note(reversals: int, result, smoothed: bool) -> str | None:
+    """The note for a fit of ``reversals`` reversals that gives a friction value without a smoothed torque (module
+    docstring), or None."""
+    if (smoothed or reversals <= MANY_REVERSALS or result.friction.value is None
+            or not result.friction.identified):
         return None
-    return (f"many cycles: {reversals} reversals; over more than {MANY_REVERSALS // 2} cycles the bias that the "
-            "twist noise gives the fitted loop exceeds the intervals of f and G (several standard errors at 50 "
-            "cycles in partial slip): fit a few cycles, or each cycle (per_cycle), and compare")
+    return (f"many cycles: {reversals} reversals, and the torque was not fitted as a smooth function of time (too "
+            "few samples per branch, or not smooth); over more than "
+            f"{MANY_REVERSALS // 2} cycles the bias that the noise on both channels gives the fitted loop may exceed "
+            "the intervals of f and G: fit a few cycles, or each cycle (per_cycle), and compare")

@@ -65,7 +65,9 @@ class LoopFit:
     torque_residual_rms : float
         RMS torque residual (N m) over every sample.
     noise : dict
-        The noise levels used (``torque`` N m, ``twist`` rad) and whether they were ``estimated``.
+        The noise levels of the channels (``torque`` N m, ``twist`` rad) and whether they were ``estimated``; for a
+        long record whose torque was fitted as a smooth function of time (``fitting.smoothing``) also the smoothed
+        channel's level ``torque_smoothed`` (N m) and the spline's ``spline_coefficients``.
     noise_scale : float
         sqrt(reduced chi-square): 1 when the distances match the noise levels.
     regime : str
@@ -164,5 +166,5 @@ class LoopFit:
             **({} if self.rig_compliance is None else {"rig_compliance": self.rig_compliance.as_dict()}),
             "units": {"shear_modulus": "Pa", "compliance": "rad/(N m)", "twist_offset": "rad", "residual_rms": "rad",
                       "torque_residual_rms": "N m", "radius": "m", "normal_force": "N", "rig_compliance": "rad/(N m)",
-                      "noise": {"torque": "N m", "twist": "rad"}},
+                      "noise": {"torque": "N m", "twist": "rad", "torque_smoothed": "N m"}},
         }

@@ -19,7 +19,8 @@ from scipy import optimize
 from . import profile as profiles
 from .loop_model import LoopModel
 
-__all__ = ["START_RATIOS", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE"]
+__all__ = ["START_RATIOS", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE", "NEAR_BOUND",
+           "off_the_bound"]
 
 #: The starting grid: T_s / max|T| (0.75: a gross-slip plateau) and kappa.
 START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
@@ -59,17 +60,46 @@ def _central_line(model: LoopModel, peak: float):
     return (float(slope), float(intercept)) if slope > 0 else None
 
 
-def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:
-    """Starting parameters: the best point of a grid in (T_s, kappa, line) by the first-order distances."""
-    best, best_p = math.inf, None
+def _grid(model: LoopModel, lines, reversals, peak) -> list[tuple[float, np.ndarray]]:
+    """The grid of starting values in (T_s, kappa, line), each with its first-order sum of squares, best first."""
+    points = []
     for compliance, offset in lines:
         for ratio in START_RATIOS:
             for kappa in START_KAPPAS:
                 p = np.concatenate([[ratio * peak, kappa, compliance, offset], reversals])
-                value = float(np.sum(model.first_order_distances(p) ** 2))
-                if value < best:
-                    best, best_p = value, p
-    return best_p
+                points.append((float(np.sum(model.first_order_distances(p) ** 2)), p))
+    return sorted(points, key=lambda point: point[0])
+
+
+def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:
+    """Starting parameters: the best point of a grid in (T_s, kappa, line) by the first-order distances."""
+    return _grid(model, lines, reversals, peak)[0][1]
+
+
+#: A fit whose kappa ends within this fraction of its upper bound is refitted from the other kappas of the grid.
+NEAR_BOUND = 0.1
+
+
+def off_the_bound(model: LoopModel, fitted, lines, reversals, peak, lower, upper, kappa_max: float):
+    """The better of ``fitted`` = (p, S, result) and the fits from the best grid point of each other starting kappa,
+    when ``fitted`` ends with kappa at its upper bound (else ``fitted``).
+
+    The first-order distances that rank the grid misjudge a loop whose torque noise is far below its twist noise
+    (a smoothed torque, ``fitting.smoothing``): on the rig generator's torque-controlled records of 10^4 samples its
+    best point, at kappa = 1, led six records in thirty to a local minimum at the bound kappa = 2 (f 9 % high, G
+    not identified), 77 residual variances above the minimum that the other starting kappas reach (f 0.2 % off)."""
+    p, s_full, _ = fitted
+    if p[1] < (1.0 - NEAR_BOUND) * kappa_max:
+        return fitted
+    best = fitted
+    for kappa in START_KAPPAS:
+        if kappa == p[1]:
+            continue
+        start = next(point for value, point in _grid(model, lines, reversals, peak) if point[1] == kappa)
+        candidate = profiles.fit(model, start, lower, upper)
+        if candidate[1] < best[1]:
+            best = candidate
+    return best
 
 
 def _stick_equivalent(model: LoopModel, line, peak: float, lower, upper, kappa_min: float) -> np.ndarray:

@@ -314,6 +314,10 @@ def text_report(record: dict) -> str:
     lines.append(f"noise: torque {_number(noise.get('torque'), 'N m')}, twist {_number(noise.get('twist'), 'rad')} "
                  f"({'estimated from the record' if noise.get('estimated') else 'given'}); noise scale "
                  f"{_number(record.get('noise_scale'))}")
+    if noise.get("torque_smoothed") is not None:
+        lines.append(f"torque fitted as a smooth function of time ({noise.get('spline_coefficients')} spline "
+                     f"coefficients): its noise {_number(noise['torque_smoothed'], 'N m')}; intervals widened for its "
+                     "correlated errors")
     lines.append(f"residuals: rms {_number(record.get('residual_rms'), 'rad')} (twist), "
                  f"{_number(record.get('torque_residual_rms'), 'N m')} (torque)")
     if record.get("message"):
