@@ -64,8 +64,9 @@ def test_refined_reversals_find_an_asymmetric_turning():
         index = turning_points(noisy_twist, threshold)
         assert index.size == 1
         errors.append(int(refined_reversals(noisy_torque, noisy_twist, index, threshold, 1e-3, 1e-2)[0]) - vertex)
-    # the vertex's scatter from the torque's curvature and noise: about one sample here
-    assert max(abs(e) for e in errors) <= 3 and abs(np.mean(errors)) < 1.0
+    # the vertex's scatter from the channels' curvatures and noise: 0.9 samples (standard deviation over 200 draws,
+    # largest 3); bounds at about 6.7 and 5 of its standard deviations (of one draw, of the mean of 20)
+    assert max(abs(e) for e in errors) <= 6 and abs(np.mean(errors)) < 1.0
 
 
 def _sinusoid(samples: int, cycles: float, noise: float, seed: int = 3):
@@ -84,10 +85,11 @@ def test_smoothed_torque_reaches_its_predicted_noise():
     # the pointwise error of a least-squares spline: s sqrt(q / N) on average over the samples
     assert smooth.noise == pytest.approx(0.01 * math.sqrt(smooth.coefficients / clock.size))
     assert 0.8 < float(np.std(error)) / smooth.noise < 1.25
-    # no systematic misfit: the spline of the noise-free sinusoid on the same knots is within 1e-5 of its amplitude
-    # (a cubic spline's error 5 h^4 max|f''''| / 384 with h = 1 / 32 of a cycle: 4e-6), 1/200 of the smoothed noise
+    # no systematic misfit: the least-squares spline of the noise-free sinusoid on the same knots is within the
+    # cubic interpolant's error bound 5 h^4 max|f''''| / 384 = 1.9e-5 of its amplitude (h = 1 / 32 of a cycle;
+    # observed 2.1e-6), 1/100 of the smoothed noise
     exact = make_lsq_spline(clock, clean, smoothing._knots(clock, reversals), k=smoothing.DEGREE)(clock)
-    assert float(np.max(np.abs(exact - clean))) < 1e-5
+    assert float(np.max(np.abs(exact - clean))) < 5.0 / 384.0 * (2.0 * np.pi) ** 4 / 32.0**4
 
 
 def test_smoothing_is_refused_where_it_does_not_hold():

@@ -18,7 +18,7 @@ The spline
 ----------
 A cubic regression spline in time (least squares on the B-spline basis) with a knot of multiplicity three at
 every reversal (a kink is allowed there: a triangular command turns sharply) and ``KNOTS_PER_BRANCH`` - 1 interior
-knots equally spaced in time on each branch between reversals (a sinusoid's branch is then resolved to 4e-6 of
+knots equally spaced in time on each branch between reversals (a sinusoid's branch is then resolved to 2e-6 of
 its amplitude).  It is used only where
 
 * there are at least ``SAMPLES_PER_COEFFICIENT`` samples per coefficient (shorter records gain little, and their
