@@ -404,7 +404,7 @@ def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower
                 continue
             first = t_quantile * se[kind] if se[kind] > 0 else 0.1 * abs(value[kind])
             ends[(kind, side)] = profiles.profile_end(model, p, s_min, scale2, kind, side, first, critical, lower,
-                                                      upper, KAPPA_MAX, limit, limit_lr, better_minimum)
+                                                      upper, KAPPA_MAX, limit, limit_lr, better_minimum, cov)
     return ends
 
 

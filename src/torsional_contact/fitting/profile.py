@@ -247,7 +247,7 @@ def _bracketed_newton(points, lo: float, hi: float, target: float) -> float:
 
 def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str, side: int, first_step: float,
                 critical: float, lower, upper, kappa_max: float, limit: float | None = None,
-                limit_lr: float | None = None, better_minimum: bool = True) -> ProfileEnd:
+                limit_lr: float | None = None, better_minimum: bool = True, covariance=None) -> ProfileEnd:
     """The end of the profile interval of psi (``Constraint`` kind) on ``side`` (+1 above psi_hat, -1 below).
 
     ``first_step`` > 0: the first trial distance from psi_hat (the Wald half-width).  ``limit``: the
@@ -258,7 +258,12 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     fit started outside the interval is fitted again from the minimum, and the lower of the two is
     the profile there (a fit outside may sit in another valley).  An end at ``limit`` is ``limit``
     itself.  Raises ``BetterMinimum`` (with ``better_minimum``; without, a point below the minimum counts
-    as LR = 0).
+    as LR = 0).  ``covariance``: the fit's (P x P); on a record large enough for the sparse path (``is_large``),
+    where the likelihood is near quadratic, each constrained fit then starts from its point's prediction along the
+    profile's tangent at the estimate, p + cov g (psi - psi(p)) / (g^T cov g) with g = dpsi/dp (the profile of a
+    quadratic likelihood, exactly): a 10^5-sample torque-controlled record took 12 CPU-s instead of 15.5, its
+    interval ends the same to 1e-6.  Not on smaller records: on the flat, curved ridges of a short partial-slip
+    loop the prediction led a constrained fit into another valley (a regression record of ``tests/test_fit.py``).
     """
     psi_hat = Constraint(kind, 0.0).of(p_hat)
     target = math.sqrt(critical)
@@ -269,6 +274,13 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     reach = span if limit_lr is None else 0.999 * span
     points = []  # (distance from psi_hat, r, dr/d distance, parameters)
     steps = 0
+    tangent = None
+    if covariance is not None and is_large(model.residual_count, model.size):
+        gradient = np.zeros(len(p_hat))
+        gradient[{"slip_torque": [0], "compliance": [2], "product": [1, 2]}[kind]] = (
+            [p_hat[2], p_hat[1]] if kind == "product" else [1.0])
+        variance = float(gradient @ covariance @ gradient)
+        tangent = covariance @ gradient / variance if variance > 0 else None
 
     def psi_at(delta):
         """psi at that distance; the limit itself (not psi_hat + side span, which rounds to either side of it) there,
@@ -284,6 +296,8 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         sane = [(0.0, 0.0, 0.0, np.asarray(p_hat, dtype=float))] + [pt for pt in points if pt[1] <= 3.0 * target]
         nearest = sane[0] if from_minimum else min(sane, key=lambda pt: abs(pt[0] - delta))
         start = np.array(nearest[3], dtype=float)
+        if tangent is not None:
+            start = start + tangent * (psi - Constraint(kind, 0.0).of(start))
         if kind == "slip_torque":
             start[0] = psi
         elif kind == "compliance":
