@@ -142,7 +142,8 @@ def turning_points(twist: np.ndarray, threshold: float) -> np.ndarray:
 def _turning_misfit(values: np.ndarray, noise: float, quartic: bool = False) -> np.ndarray:
     """Chi-square of the best two-sided parabola x = c + a (k - v)^2 (k < v), c + b (k - v)^2 (k >= v) through
     ``values`` (at k = 0, 1, ...) for every candidate vertex v = 0 .. len - 1, in units of ``noise`` (module
-    docstring): three linear coefficients per candidate, solved at once by their normal equations."""
+    docstring), with a quartic term (k - v)^4 of its own on each side when ``quartic``: three (five) linear
+    coefficients per candidate, solved at once by their normal equations."""
     k = np.arange(values.size, dtype=float) / max(values.size - 1, 1)  # scaled to [0, 1]: a well-posed design
     misfit = np.empty(values.size)
     for first in range(0, values.size, TURNING_BLOCK):  # blocks of candidates bound the memory of a wide cap
@@ -180,11 +181,10 @@ def refined_reversals(torque: np.ndarray, twist: np.ndarray, reversals: np.ndarr
     torque, twist = np.asarray(torque, dtype=float), np.asarray(twist, dtype=float)
     index = np.asarray(reversals, dtype=int)
     out = index.copy()
-    band = threshold
     for j, r in enumerate(index.tolist()):
         low_limit = out[j - 1] + 1 if j else 1
         high_limit = index[j + 1] - 1 if j + 1 < index.size else twist.size - 2
-        near = np.abs(twist[low_limit:high_limit + 1] - twist[r]) < band
+        near = np.abs(twist[low_limit:high_limit + 1] - twist[r]) < threshold
         # the contiguous run of ``near`` samples that holds r: the cap of this turning
         far_before = np.flatnonzero(~near[:r - low_limit])
         far_after = np.flatnonzero(~near[r - low_limit:])
