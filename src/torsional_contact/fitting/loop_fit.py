@@ -274,9 +274,9 @@ class Fitted:
     line: object
 
 
-def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, settings, quick: bool = False) -> Fitted:
+def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, settings, quick=False, start=None):
     """The fit of a prepared record (``fit_loop``): a ``Fitted`` (with ``quick``: the point estimate and the slip
-    test's verdict only, no result)."""
+    test's verdict only, no result; ``start``: parameters to start from instead of the best of the grid)."""
     a, force, confidence, bootstrap, seed, estimated, contact = settings
     model = LoopModel(torque, twist, reversal_index, s_t, s_theta, contact)
     gross = contact.gross_slip_torque
@@ -293,7 +293,7 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     central = _central_line(model, peak)
     if central is not None:
         lines.append(central)
-    start = _start(model, lines, twist[reversal_index], peak)
+    start = _start(model, lines, twist[reversal_index], peak) if start is None else np.array(start, dtype=float)
     lower = np.full(start.size, -np.inf)
     upper = np.full(start.size, np.inf)
     lower[:3] = [1e-9 * peak, KAPPA_MIN, min(c for c, _ in lines) * 1e-6]
