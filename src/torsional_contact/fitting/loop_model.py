@@ -237,7 +237,8 @@ class LoopModel:
         positions = np.arange(samples.size)
         # the samples still moving: their rows of floats, rows position in ``samples`` and first piece, and states
         # (the iteration's own copies)
-        observed = observed.take(samples, axis=1)
+        if samples is not self._columns:  # every sample (the projection's call) needs no copy of its rows
+            observed = observed.take(samples, axis=1)
         index = np.array([positions, first[samples]])
         if start.shape[0] == 4:
             t_obs, w_obs, (w, g) = observed[0], observed[1], start[:2]
@@ -264,12 +265,19 @@ class LoopModel:
                     t_obs, w_obs, (w, misfit), n = observed[0], observed[1], current[::4], keep.size
                 # the full step and its fractions in one evaluation (fraction, sample); each sample keeps its best if
                 # it lowers the misfit
-                trial = w + _FRACTIONS_COLUMN * step
-                g_trial, s_trial, c_trial = curve(trial, index[1], observed[2:])
-                trial_misfit = (t_obs - g_trial) ** 2 / s_t2 + (w_obs - trial) ** 2 / s_w2
-                # each sample's best fraction in the flattened (fraction, sample) arrays
-                pick = trial_misfit.argmin(axis=0) * n + positions[:n]
-                current = np.array([trial, g_trial, s_trial, c_trial, trial_misfit]).reshape(5, -1).take(pick, axis=1)
+                # in blocks of ``FOOT_BLOCK`` samples (the same numbers, sample by sample: a long record's trials
+                # over all samples at once set its peak memory)
+                current = np.empty((5, n))
+                for begin in range(0, n, FOOT_BLOCK):
+                    block = slice(begin, begin + FOOT_BLOCK)
+                    trial = w[block] + _FRACTIONS_COLUMN * step[block]
+                    g_trial, s_trial, c_trial = curve(trial, index[1, block], observed[2:, block])
+                    trial_misfit = (t_obs[block] - g_trial) ** 2 / s_t2 + (w_obs[block] - trial) ** 2 / s_w2
+                    # each sample's best fraction in the flattened (fraction, sample) arrays
+                    size = trial.shape[1]
+                    pick = trial_misfit.argmin(axis=0) * size + positions[:size]
+                    current[:, block] = np.array([trial, g_trial, s_trial, c_trial,
+                                                  trial_misfit]).reshape(5, -1).take(pick, axis=1)
                 lower = (current[4] <= misfit).nonzero()[0]
                 # a sample whose step cannot lower its misfit sits at its foot point (a kink)
                 if lower.size < n:
