@@ -34,7 +34,11 @@ DESCRIPTIONS = {
     "inverted": "the inverted twist channel",
     "quantised": "the quantised channels",
     "running-in": "the running-in record",
+    "model-hertz": "the record of a sphere on a flat read with the cylinders' model",
+    "model-flat-punch": "the record of a flat punch read with the cylinders' model",
     "long": "the long record",
+    "long-lag": "the long record whose twist lags",
+    "long-stuck-lag": "the long record of a stuck contact whose twist lags",
 }
 
 
