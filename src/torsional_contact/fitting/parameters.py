@@ -13,6 +13,9 @@ intervals are on; ``LOOP`` = (T_s, kappa, C, theta_0), the parameters the whole 
 The shear modulus is not a parameter: it is profiled through the product y = kappa C = k / T_s (rad / (N m);
 1/G = pi a^3 y / (2 e) for e elastic bodies, ``profile.Constraint("product", y)``).
 
+``fitting.masing`` lays out the Jacobian's columns in the same order from a branch's gradient (its q columns, the
+CORE, then theta_0 in column q and U_j in column q + 1 + j), without naming them.
+
 The straight loop of a record in stick, theta = theta_0 + C T, has the parameters (C, theta_0):
 ``LINE_COMPLIANCE`` (rad / (N m)) and ``LINE_OFFSET`` (rad).
 """
