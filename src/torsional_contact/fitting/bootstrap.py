@@ -36,6 +36,7 @@ import numpy as np
 from scipy import special  # the normal quantiles (scipy.stats: the same functions, 0.5 s more to import)
 
 from .loop_model import LoopModel
+from .parameters import COMPLIANCE, KAPPA, SLIP_TORQUE
 from .profile import fit
 from .results import Estimate
 
@@ -108,8 +109,8 @@ def bootstrap_intervals(model: LoopModel, p, scale2: float, count: int, confiden
         twist = true_twist + s_w * rng.standard_normal(true_twist.size)
         world = LoopModel(torque, twist, model.reversals, model.torque_noise, model.twist_noise, model.contact)
         q = fit(world, p, lower, upper, kappa_max=kappa_max)[0]
-        replicates[b] = (q[0], q[1] * q[2], q[2])
-    estimates = (p[0], p[1] * p[2], p[2])
+        replicates[b] = (q[SLIP_TORQUE], q[KAPPA] * q[COMPLIANCE], q[COMPLIANCE])
+    estimates = (p[SLIP_TORQUE], p[KAPPA] * p[COMPLIANCE], p[COMPLIANCE])
     out = {}
     for j, name in enumerate(("slip_torque", "product", "compliance")):
         bias = bias_correction(replicates[:, j], estimates[j])

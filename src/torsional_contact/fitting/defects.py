@@ -68,6 +68,7 @@ from dataclasses import replace
 import numpy as np
 from scipy import optimize, signal, sparse, special
 
+from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, SLIP_TORQUE
 from .profile import covariance, is_large
 from .results import Estimate
 
@@ -398,7 +399,7 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         lo, hi = fitted.result.friction.interval
         to_f = 2.0 / (settings[0] * settings[1])
         outside = steady_fit.p is not None and fitted.result.friction.value is not None and not (
-            lo <= to_f * steady_fit.p[0] <= hi)
+            lo <= to_f * steady_fit.p[SLIP_TORQUE] <= hi)
         if virgin_lr <= VIRGIN_CRITICAL and not (outside and virgin_lr > VIRGIN_HINT):
             virgin_lr = None
     if not kinds and virgin_lr is None:
@@ -477,18 +478,18 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
         joint = np.diag(covariance(with_defects, scale2))[:jac.shape[1]]
         ratios = np.sqrt(np.where(core > 0, joint / core, 1.0))
     if final.p is None:  # a straight loop: C is the line's first parameter
-        result = replace(result, compliance=widened(result.compliance, float(ratios[0])))
+        result = replace(result, compliance=widened(result.compliance, float(ratios[LINE_COMPLIANCE])))
     else:
         p = final.p
         y_gradient = np.zeros(jac.shape[1])
-        y_gradient[1], y_gradient[2] = p[2], p[1]
+        y_gradient[KAPPA], y_gradient[COMPLIANCE] = p[COMPLIANCE], p[KAPPA]
         cov_core = covariance(jac, scale2)
         cov_joint = covariance(with_defects, scale2)[:jac.shape[1], :jac.shape[1]]
         y_core, y_joint = float(y_gradient @ cov_core @ y_gradient), float(y_gradient @ cov_joint @ y_gradient)
         y_ratio = math.sqrt(y_joint / y_core) if y_core > 0 else 1.0
-        result = replace(result, friction=widened(result.friction, float(ratios[0])),
+        result = replace(result, friction=widened(result.friction, float(ratios[SLIP_TORQUE])),
                          shear_modulus=widened_modulus(result.shear_modulus, y_ratio),
-                         compliance=widened(result.compliance, float(ratios[2])))
+                         compliance=widened(result.compliance, float(ratios[COMPLIANCE])))
     return replace(final, result=replace(result, warnings=tuple(notes)))
 
 

@@ -26,6 +26,7 @@ import numpy as np
 from scipy import special
 
 from . import profile as profiles
+from .parameters import COMPLIANCE, KAPPA, SLIP_TORQUE, TURNING
 from .results import Estimate
 
 __all__ = ["with_known_modulus", "shaft_compliance"]
@@ -58,23 +59,26 @@ def with_known_modulus(fitted, shear_modulus: float, gauge_length: float | None,
         kappa_min, kappa_max = kappa_bounds
         lower = np.full(p.size, -np.inf)
         upper = np.full(p.size, np.inf)
-        lower[0], lower[1], lower[2] = 1e-9 * p[0], kappa_min, 1e-9 * p[2]
-        upper[1] = kappa_max
+        lower[SLIP_TORQUE], lower[KAPPA], lower[COMPLIANCE] = 1e-9 * p[SLIP_TORQUE], kappa_min, 1e-9 * p[COMPLIANCE]
+        upper[KAPPA] = kappa_max
         turning = model.twist[model.reversals]
-        lower[4:], upper[4:] = turning - reach, turning + reach
+        lower[TURNING], upper[TURNING] = turning - reach, turning + reach
         # C within what the bounds on kappa allow for this y
-        p[2] = min(max(p[2], y / kappa_max * (1 + 1e-9)), y / kappa_min * (1 - 1e-9))
-        p[1] = y / p[2]
+        p[COMPLIANCE] = min(max(p[COMPLIANCE], y / kappa_max * (1 + 1e-9)), y / kappa_min * (1 - 1e-9))
+        p[KAPPA] = y / p[COMPLIANCE]
         constraint = profiles.Constraint("product", y)
         p, s, fit = profiles.fit(model, p, lower, upper, constraint, kappa_max)
         dof = model.torque.size - 3
         cov = profiles.covariance(fit.jac, s / dof)
         t = float(special.stdtrit(dof, 0.5 + confidence / 2))
         to_f = 2.0 / (radius * normal_force)
-        se_ts, se_c = math.sqrt(max(cov[0, 0], 0.0)), math.sqrt(max(cov[1, 1], 0.0))
-        friction = Estimate(to_f * p[0], to_f * se_ts, (to_f * (p[0] - t * se_ts), to_f * (p[0] + t * se_ts)))
-        compliance = Estimate(float(p[2]), se_c, (p[2] - t * se_c, p[2] + t * se_c))
-        if p[1] <= kappa_min * (1 + 1e-6) or p[1] >= kappa_max * (1 - 1e-6):
+        # the covariance of the free parameters q (y held: no kappa), T_s and C at their places there
+        i_ts, i_c = constraint.position(SLIP_TORQUE), constraint.position(COMPLIANCE)
+        se_ts, se_c = math.sqrt(max(cov[i_ts, i_ts], 0.0)), math.sqrt(max(cov[i_c, i_c], 0.0))
+        ts, c = p[SLIP_TORQUE], p[COMPLIANCE]
+        friction = Estimate(to_f * ts, to_f * se_ts, (to_f * (ts - t * se_ts), to_f * (ts + t * se_ts)))
+        compliance = Estimate(float(c), se_c, (c - t * se_c, c + t * se_c))
+        if p[KAPPA] <= kappa_min * (1 + 1e-6) or p[KAPPA] >= kappa_max * (1 - 1e-6):
             notes.append(f"shear modulus: with G = {shear_modulus:.4g} Pa the fitted compliance sits at the model's "
                          f"bound on kappa = k / (C T_s) (in [{kappa_min:g}, {kappa_max:g}]): G does not fit this loop")
         result = replace(result, friction=friction, compliance=compliance, shear_modulus=modulus, correlation=None,

@@ -28,16 +28,14 @@ through the elastic slope, ``fitting.record_checks``, so that an exact or comman
 likelihood; spikes are removed first and counted, and an inverted channel is an error); only their ratio shapes
 the fit, the overall scale is estimated from the residuals).  Each sample's residual is its orthogonal distance
 from the curve in noise units, its true twist eliminated by minimisation (``fitting.loop_model``: the foot point on the
-curve; the functional errors-in-variables likelihood, i.e. orthogonal distance regression along
-every branch).  The turning point of each branch is the true state of the reversal's own sample,
-which keeps its two residuals.  The first implementation used the effective-variance residual
-(T_i - T(theta_i)) / sqrt(s_T^2 + T'^2 s_theta^2) at the measured twist, the distance's
-first-order approximation, and left the twists at the reversals free: where the contact's twist
-is a few noise levels wide (partial slip at 1e-5 rad of twist noise) the second-order error
-biased f by 1.5 % (1.5 of its standard errors) and the free turning points let a loop in stick
-fit its noise with slip.  With N samples and M reversals there are N + M residuals, 4 + M
-parameters and s^2 = sum r^2 / (N - 4) (one degree of freedom per sample: two observations, one
-latent twist; no Neyman-Scott halving).
+curve; the functional errors-in-variables likelihood, i.e. orthogonal distance regression along every branch).  The
+turning point of each branch is the true state of the reversal's own sample, which keeps its two residuals.  The
+first implementation used the effective-variance residual (T_i - T(theta_i)) / sqrt(s_T^2 + T'^2 s_theta^2) at the
+measured twist, the distance's first-order approximation, and left the twists at the reversals free: where the
+contact's twist is a few noise levels wide (partial slip at 1e-5 rad of twist noise) the second-order error biased f
+by 1.5 % (1.5 of its standard errors) and the free turning points let a loop in stick fit its noise with slip.  With
+N samples and M reversals there are N + M residuals, 4 + M parameters and s^2 = sum r^2 / (N - 4) (one degree of
+freedom per sample: two observations, one latent twist; no Neyman-Scott halving).
 
 Fitting
 -------
@@ -127,6 +125,7 @@ from . import defects
 from . import profile as profiles
 from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
+from .parameters import COMPLIANCE, CORE, KAPPA, LINE_COMPLIANCE, LINE_OFFSET, LOOP, OFFSET, SLIP_TORQUE, TURNING
 from .per_cycle import cycles_with_progress
 from .record_checks import checked_time, many_reversals_note, prepared_record
 from .results import Estimate, LoopFit
@@ -296,13 +295,13 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     start = _start(model, lines, twist[reversal_index], peak) if start is None else np.array(start, dtype=float)
     lower = np.full(start.size, -np.inf)
     upper = np.full(start.size, np.inf)
-    lower[:3] = [1e-9 * peak, KAPPA_MIN, min(c for c, _ in lines) * 1e-6]
-    upper[1] = KAPPA_MAX
+    lower[CORE] = [1e-9 * peak, KAPPA_MIN, min(c for c, _ in lines) * 1e-6]
+    upper[KAPPA] = KAPPA_MAX
     # the true turning points lie within a few noise levels (in twist: the twist's and the torque's through C) of the
     # extreme samples; unbounded, the reversal twists of a loop in stick wander off to fit noise with slip elsewhere
-    reach = REVERSAL_REACH * math.hypot(s_theta, lines[0][0] * s_t)
-    lower[4:] = twist[reversal_index] - reach
-    upper[4:] = twist[reversal_index] + reach
+    reach = REVERSAL_REACH * math.hypot(s_theta, lines[0][LINE_COMPLIANCE] * s_t)
+    lower[TURNING] = twist[reversal_index] - reach
+    upper[TURNING] = twist[reversal_index] + reach
     dof = n - 4  # N - M distances and 2 M reversal residuals for 4 + M parameters (``loop_model``)
     p, s_full, result = profiles.fit(model, start, lower, upper)
     # the straight loop is a loop of the full model (a slip torque above the largest torque): the fit from there
@@ -324,13 +323,13 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     # noise there is no evidence of slip, and it is not the smooth departure that Davies' bound counts).
     floor = stick_peak / gross  # the plateau at the straight loop's largest torque
     s_test = s_full
-    if p[0] < floor:
+    if p[SLIP_TORQUE] < floor:
         lower_test = lower.copy()
-        lower_test[0] = floor
+        lower_test[SLIP_TORQUE] = floor
         start_test = p.copy()
-        start_test[0] = floor * (1 + 1e-6)
+        start_test[SLIP_TORQUE] = floor * (1 + 1e-6)
         s_test = profiles.fit(model, start_test, lower_test, upper)[1]
-        if p_line[0] >= floor:  # the straight loop is inside the alternative: start there too
+        if p_line[SLIP_TORQUE] >= floor:  # the straight loop is inside the alternative: start there too
             s_test = min(s_test, profiles.fit(model, p_line, lower_test, upper)[1])
     # the straight loop's sum of squares is the fit's from ``p_line`` up to the optimiser's tolerance: a statistic
     # below zero is that tolerance, or an optimisation that failed (said, never read as a verdict)
@@ -382,19 +381,20 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
 def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower, upper, stick_peak, straight,
                        peak, better_minimum: bool = True):
     """Both ends of the profile intervals of T_s, y = kappa C and C (``fitting.profile``)."""
-    y = p[1] * p[2]
-    y_gradient = np.array([0.0, p[2], p[1]])
-    y_se = math.sqrt(max(float(y_gradient @ cov[:3, :3] @ y_gradient), 0.0))
-    se = {"slip_torque": math.sqrt(max(cov[0, 0], 0.0)), "compliance": math.sqrt(max(cov[2, 2], 0.0)), "product": y_se}
-    value = {"slip_torque": p[0], "compliance": p[2], "product": y}
+    y = p[KAPPA] * p[COMPLIANCE]
+    y_gradient = np.array([0.0, p[COMPLIANCE], p[KAPPA]])
+    y_se = math.sqrt(max(float(y_gradient @ cov[CORE, CORE] @ y_gradient), 0.0))
+    se = {"slip_torque": math.sqrt(max(cov[SLIP_TORQUE, SLIP_TORQUE], 0.0)),
+          "compliance": math.sqrt(max(cov[COMPLIANCE, COMPLIANCE], 0.0)), "product": y_se}
+    value = {"slip_torque": p[SLIP_TORQUE], "compliance": p[COMPLIANCE], "product": y}
     # T_s above the straight loop's largest torque: the straight loop (LR ``straight``); a plateau at a third of the
     # largest torque is far outside any interval; y at kappa = KAPPA_MIN: G infinite for any purpose
     onset = model.contact.slip_onset_torque
     upper_limit = (stick_peak / onset, straight) if onset > 0 else (None, None)  # every larger T_s: the straight loop
     limits = {("slip_torque", 1): upper_limit, ("slip_torque", -1): (0.25 * peak, None),
-              ("product", -1): (KAPPA_MIN * p[2], None), ("product", 1): (None, None),
+              ("product", -1): (KAPPA_MIN * p[COMPLIANCE], None), ("product", 1): (None, None),
               # C -> 0 (a contact whose own twist is linear in the torque takes it all): no lower end
-              ("compliance", -1): (1e-6 * p[2], None), ("compliance", 1): (None, None)}
+              ("compliance", -1): (1e-6 * p[COMPLIANCE], None), ("compliance", 1): (None, None)}
     ends = {}
     for kind in ("slip_torque", "product", "compliance"):
         for side in (-1, 1):
@@ -423,8 +423,8 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
     return LoopFit(
         friction=Estimate(None, None, (proven, None), identified=False, lower_bound=bound),
         shear_modulus=Estimate(None, None, (None, None), identified=False),
-        compliance=Estimate(float(compliance), float(se[0]), _wald(compliance, se[0], t)),
-        twist_offset=Estimate(float(offset), float(se[1]), _wald(offset, se[1], t)),
+        compliance=Estimate(float(compliance), float(se[LINE_COMPLIANCE]), _wald(compliance, se[LINE_COMPLIANCE], t)),
+        twist_offset=Estimate(float(offset), float(se[LINE_OFFSET]), _wald(offset, se[LINE_OFFSET], t)),
         correlation=None,
         residual_rms=float(np.sqrt(np.mean((twist - offset - compliance * torque) ** 2))),
         torque_residual_rms=float(np.sqrt(np.mean((torque - (twist - offset) / compliance) ** 2))),
@@ -444,14 +444,14 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
 
 def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical, critical, force, a,
                  confidence, bootstrap, seed, lower, upper, common, record_notes, spikes, clipped: bool = False):
-    slip_torque, kappa, compliance, offset = (float(v) for v in p[:4])
-    se = np.sqrt(np.maximum(np.diag(cov)[:4], 0.0))
+    slip_torque, kappa, compliance, offset = (float(v) for v in p[LOOP])
+    se = np.sqrt(np.maximum(np.diag(cov)[LOOP], 0.0))
     to_f = 2.0 / (force * a)
     # kappa = k / (C T_s), k = e f p-bar / G (e elastic bodies), T_s = f F a / 2: 1/G = c_g kappa C
     c_g = math.pi * a**3 / (2.0 * model.contact.elastic_bodies)
     y = kappa * compliance
     y_gradient = np.array([0.0, compliance, kappa])
-    y_se = math.sqrt(max(float(y_gradient @ cov[:3, :3] @ y_gradient), 0.0))
+    y_se = math.sqrt(max(float(y_gradient @ cov[CORE, CORE] @ y_gradient), 0.0))
     ends_at_cap = {key for key, e in ends.items() if e.at_cap and e.value is not None}
     ts_lo, ts_hi = ends[("slip_torque", -1)].value, ends[("slip_torque", 1)].value
     y_lo, y_hi = ends[("product", -1)].value, ends[("product", 1)].value
@@ -467,8 +467,9 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
                      None)
     if f_assumed:
         notes.append(f"the {f_assumed} end of the friction interval is set by the model's bound kappa <= {KAPPA_MAX:g}")
+    f_se = to_f * se[SLIP_TORQUE]
     if f_identified:
-        friction = Estimate(to_f * slip_torque, to_f * se[0], (to_f * ts_lo, to_f * ts_hi), assumed_end=f_assumed)
+        friction = Estimate(to_f * slip_torque, f_se, (to_f * ts_lo, to_f * ts_hi), assumed_end=f_assumed)
     else:
         bound = to_f * ts_lo if ts_lo is not None else None
         friction = Estimate(None, None, (bound, None), identified=False, lower_bound=bound, assumed_end=f_assumed)
@@ -478,15 +479,14 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
     g_identified = f_identified and y_lo is not None and y_hi is not None and not g_capped
     if g_identified:
         modulus = Estimate(1.0 / (c_g * y), y_se / (c_g * y**2), g_interval)
-        cov_fy = float(np.array([to_f, 0.0, 0.0]) @ cov[:3, :3] @ y_gradient)
-        f_se = to_f * se[0]
+        cov_fy = float(np.array([to_f, 0.0, 0.0]) @ cov[CORE, CORE] @ y_gradient)
         correlation = -cov_fy / (f_se * y_se) if f_se > 0 and y_se > 0 else None
     else:
         modulus = Estimate(None, None, g_interval, identified=False,
                            lower_bound=None if g_capped else g_interval[0], assumed_end="lower" if g_capped else None)
         correlation = None
     if c_lo is not None and c_hi is not None:
-        compliance_estimate = Estimate(compliance, float(se[2]), (c_lo, c_hi))
+        compliance_estimate = Estimate(compliance, float(se[COMPLIANCE]), (c_lo, c_hi))
     else:
         compliance_estimate = Estimate(None, None, (c_lo, c_hi), identified=False, lower_bound=c_lo)
 
@@ -538,7 +538,7 @@ def _slip_result(model, p, s_full, scale2, cov, ends, stick_test, stick_critical
             warnings.warn(unresolved, AccuracyWarning, stacklevel=3)
     return LoopFit(
         friction=friction, shear_modulus=modulus, compliance=compliance_estimate,
-        twist_offset=Estimate(offset, float(se[3]), _wald(offset, se[3], math.sqrt(critical))),
+        twist_offset=Estimate(offset, float(se[OFFSET]), _wald(offset, se[OFFSET], math.sqrt(critical))),
         correlation=correlation,
         residual_rms=float(np.sqrt(np.mean(twist_residual**2))) if twist_residual.size else math.nan,
         torque_residual_rms=float(np.sqrt(np.mean((torque - fitted) ** 2))),

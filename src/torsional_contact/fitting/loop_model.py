@@ -69,12 +69,13 @@ import math
 import numpy as np
 
 from .masing import jacobian_along, pieces, torque_along, turning_torques, walk
+from .parameters import COMPLIANCE, FIRST_TURNING, LOOP, PARAMETER_NAMES, SLIP_TORQUE, TURNING, turning_twists
 from .skeleton import Skeleton, skeleton_of
 
 __all__ = ["LoopModel", "FOOT_GAIN", "FOOT_ITERATIONS", "PARAMETERS"]
 
-#: Names of the first four parameters; the twists at the reversals follow.
-PARAMETERS = ("slip_torque", "kappa", "compliance", "twist_offset")
+#: Names of the first four parameters; the twists at the reversals follow (``fitting.parameters``).
+PARAMETERS = PARAMETER_NAMES
 #: A foot point has converged when the next Gauss-Newton step would lower its squared distance by less than this.
 FOOT_GAIN = 1e-6
 #: Newton steps at most (two or three are taken at realistic noise).
@@ -132,7 +133,7 @@ class LoopModel:
     @property
     def size(self) -> int:
         """Number of parameters P = 4 + M."""
-        return 4 + self.reversals.size
+        return FIRST_TURNING + self.reversals.size
 
     @property
     def residual_count(self) -> int:
@@ -145,9 +146,9 @@ class LoopModel:
         p = np.asarray(p, dtype=float)
         key = p.tobytes()
         if self._curve[0] != key:
-            slip_torque, kappa, compliance, offset = p[:4].tolist()
+            slip_torque, kappa, compliance, offset = p[LOOP].tolist()
             skeleton = skeleton_of(kappa, self.contact)
-            path = walk(np.concatenate((p[4:], [self.end])) - offset)
+            path = walk(np.concatenate((turning_twists(p), [self.end])) - offset)
             branches = _branches(skeleton, slip_torque, compliance)
             # the torques alone: the same numbers as with their gradient (the same evaluation of F), which waits until
             # a Jacobian is asked for
@@ -190,7 +191,7 @@ class LoopModel:
             return self._foot[1]
         s_t2, s_w2 = self.torque_noise**2, self.twist_noise**2
         path, turning, branches, offset, lookup = self._curve_of(p)
-        curve = _FootCurve(lookup, branches["skeleton"], p[0], p[2], offset)
+        curve = _FootCurve(lookup, branches["skeleton"], p[SLIP_TORQUE], p[COMPLIANCE], offset)
         # each sample's first piece (ints), and rows of floats: torque, twist, then the heading of its segment and the
         # ends of its pieces (``_FootCurve``): gathered together for the samples still moving
         first = lookup.first[self.segment]
@@ -346,7 +347,7 @@ class LoopModel:
             d = (self.torque - torque - slope * (self.twist - u)) / scale
             turning = self._curve_of(p)[1]
             reversal_torque = (self.torque[self.reversals] - turning.torque) / self.torque_noise
-            reversal_twist = (self.twist[self.reversals] - np.asarray(p[4:], dtype=float)) / self.twist_noise
+            reversal_twist = (self.twist[self.reversals] - np.asarray(p[TURNING], dtype=float)) / self.twist_noise
             residual = np.concatenate([d.take(self._free_index), reversal_torque, reversal_twist])
             residual.flags.writeable = False  # handed out again with the Jacobian
             self._residual = (key, foot, (residual, scale))
@@ -377,7 +378,7 @@ class LoopModel:
             return self._jac_twist
         m = self.reversals.size
         rows = np.zeros((m, size))
-        rows[np.arange(m), 4 + np.arange(m)] = -1.0 / self.twist_noise
+        rows[np.arange(m), FIRST_TURNING + np.arange(m)] = -1.0 / self.twist_noise
         rows.flags.writeable = False
         if size == self.size:
             self._jac_twist = rows
@@ -420,7 +421,7 @@ def _branches(skeleton: Skeleton, slip_torque: float, compliance: float) -> dict
         t, slope, omega = skeleton(x, rotation=True)
         with np.errstate(invalid="ignore"):
             d_kappa = np.where(slope > 0, -slip_torque * omega * slope, 0.0)
-        grad = np.array([t - slope * x, d_kappa, -slip_torque * slope * x / compliance]).T  # the columns
+        grad = np.array([t - slope * x, d_kappa, -slip_torque * slope * x / compliance]).T  # the columns (CORE)
         return slip_torque * t, slope / compliance, grad
 
     return {"value": value, "curvature": curvature, "jacobian": jacobian, "skeleton": skeleton}

@@ -47,6 +47,7 @@ import numpy as np
 from scipy import optimize, sparse
 
 from .loop_model import LoopModel
+from .parameters import COMPLIANCE, KAPPA, SLIP_TORQUE
 
 __all__ = ["Constraint", "fit", "covariance", "is_large", "ProfileEnd", "profile_end", "BetterMinimum",
            "ROOT_TOLERANCE"]
@@ -93,7 +94,8 @@ class BetterMinimum(Exception):
 
 @dataclass(frozen=True)
 class Constraint:
-    """psi(p) = value for psi one of "slip_torque" (p[0]), "compliance" (p[2]) or "product" (y = p[1] p[2])."""
+    """psi(p) = value for psi one of "slip_torque" (T_s, N m), "compliance" (C, rad / (N m)) or "product" (y = kappa C,
+    rad / (N m)); the free parameters q are p without the one held (``_FIXED``: kappa for the product)."""
 
     kind: str
     value: float
@@ -102,15 +104,19 @@ class Constraint:
         """Indices of the free parameters q in p (read-only)."""
         return _free_indices(self.kind, size)
 
+    def position(self, index: int) -> int:
+        """The place in q of the free parameter p[index]."""
+        return index - (index > _FIXED[self.kind])
+
     def expand(self, q: np.ndarray, size: int) -> np.ndarray:
         p = np.empty(size)
         p[self.free(size)] = q
         if self.kind == "slip_torque":
-            p[0] = self.value
+            p[SLIP_TORQUE] = self.value
         elif self.kind == "compliance":
-            p[2] = self.value
+            p[COMPLIANCE] = self.value
         else:
-            p[1] = self.value / p[2]
+            p[KAPPA] = self.value / p[COMPLIANCE]
         return p
 
     def tangent(self, q: np.ndarray, size: int) -> np.ndarray:
@@ -118,27 +124,33 @@ class Constraint:
         free = self.free(size)
         t = np.zeros((size, free.size))
         t[free, np.arange(free.size)] = 1.0
-        if self.kind == "product":  # kappa = y / C: d kappa / d C = -y / C^2 (C is q[1], after T_s)
-            t[1, 1] = -self.value / q[1] ** 2
+        if self.kind == "product":  # kappa = y / C: d kappa / d C = -y / C^2
+            c = self.position(COMPLIANCE)
+            t[KAPPA, c] = -self.value / q[c] ** 2
         return t
 
     def bounds(self, lower: np.ndarray, upper: np.ndarray, kappa_max: float):
         free = self.free(lower.size)
         lo, hi = lower[free].copy(), upper[free].copy()
-        if self.kind == "product":  # lower[1] <= kappa = y / C <= kappa_max: y / kappa_max <= C <= y / lower[1]
-            lo[1] = max(lo[1], self.value / min(kappa_max, upper[1]))
-            if lower[1] > 0:
-                hi[1] = min(hi[1], self.value / lower[1])
+        if self.kind == "product":  # kappa's lower bound <= y / C <= kappa_max: y / kappa_max <= C <= y / lower bound
+            c = self.position(COMPLIANCE)
+            lo[c] = max(lo[c], self.value / min(kappa_max, upper[KAPPA]))
+            if lower[KAPPA] > 0:
+                hi[c] = min(hi[c], self.value / lower[KAPPA])
         return lo, hi
 
     def of(self, p) -> float:
-        return float(p[0] if self.kind == "slip_torque" else p[2] if self.kind == "compliance" else p[1] * p[2])
+        return float(p[SLIP_TORQUE] if self.kind == "slip_torque" else p[COMPLIANCE] if self.kind == "compliance"
+                     else p[KAPPA] * p[COMPLIANCE])
+
+
+#: The parameter each kind of ``Constraint`` holds (y = kappa C: kappa, from y and the free C).
+_FIXED = {"slip_torque": SLIP_TORQUE, "compliance": COMPLIANCE, "product": KAPPA}
 
 
 @functools.lru_cache(maxsize=64)
 def _free_indices(kind: str, size: int) -> np.ndarray:
-    fixed = {"slip_torque": 0, "compliance": 2, "product": 1}[kind]
-    free = np.delete(np.arange(size), fixed)
+    free = np.delete(np.arange(size), _FIXED[kind])
     free.flags.writeable = False
     return free
 
@@ -227,10 +239,10 @@ def _slope(model: LoopModel, p, kind: str) -> float:
     d, jac = model.distances(p, jacobian=True, sparse=is_large(model.residual_count, model.size))
     gradient = jac.T @ d  # dS/dp / 2, for a dense or a sparse Jacobian
     if kind == "slip_torque":
-        return 2.0 * float(gradient[0])
+        return 2.0 * float(gradient[SLIP_TORQUE])
     if kind == "compliance":
-        return 2.0 * float(gradient[2])
-    return 2.0 * float(gradient[1]) / p[2]  # y = kappa C at fixed C: d kappa / d y = 1 / C
+        return 2.0 * float(gradient[COMPLIANCE])
+    return 2.0 * float(gradient[KAPPA]) / p[COMPLIANCE]  # y = kappa C at fixed C: d kappa / d y = 1 / C
 
 
 def _bracketed_newton(points, lo: float, hi: float, target: float) -> float:
@@ -279,8 +291,8 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     tangent = None
     if covariance is not None and is_large(model.residual_count, model.size):
         gradient = np.zeros(len(p_hat))
-        gradient[{"slip_torque": [0], "compliance": [2], "product": [1, 2]}[kind]] = (
-            [p_hat[2], p_hat[1]] if kind == "product" else [1.0])
+        gradient[{"slip_torque": [SLIP_TORQUE], "compliance": [COMPLIANCE], "product": [KAPPA, COMPLIANCE]}[kind]] = (
+            [p_hat[COMPLIANCE], p_hat[KAPPA]] if kind == "product" else [1.0])
         variance = float(gradient @ covariance @ gradient)
         tangent = covariance @ gradient / variance if variance > 0 else None
 
@@ -303,11 +315,11 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         if tangent is not None:
             start = start + tangent * (psi - Constraint(kind, 0.0).of(start))
         if kind == "slip_torque":
-            start[0] = psi
+            start[SLIP_TORQUE] = psi
         elif kind == "compliance":
-            start[2] = psi
+            start[COMPLIANCE] = psi
         else:
-            start[2] = max(start[2], psi / kappa_max * (1 + 1e-9))
+            start[COMPLIANCE] = max(start[COMPLIANCE], psi / kappa_max * (1 + 1e-9))
         p, s, _ = fit(model, start, lower, upper, Constraint(kind, psi), kappa_max)
         steps += 1
         lr = (s - s_min) / scale2
@@ -321,13 +333,13 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     # y = kappa C beyond kappa_max C needs a larger C, which the data fix far more tightly than y: the profile rises
     # like a wall there.  When the search reaches the bound it tries just inside: if the end lies beyond, the model's
     # bound sets it.
-    y_cap = kappa_max * p_hat[2] * (1 - 1e-6) if kind == "product" and side > 0 else math.inf
+    y_cap = kappa_max * p_hat[COMPLIANCE] * (1 - 1e-6) if kind == "product" and side > 0 else math.inf
     if y_cap <= psi_hat:
         return ProfileEnd(psi_hat, np.asarray(p_hat, dtype=float), 0, True)
     reach = min(reach, y_cap - psi_hat)
     # the Wald half-width, within 1e-3 and 0.2 of psi's scale (a degenerate covariance, a poorly determined psi: the
     # steps grow from there); the scale of y = kappa C is its range, kappa_max C (its estimate may sit at 0)
-    scale = kappa_max * p_hat[2] if kind == "product" and math.isfinite(kappa_max) else abs(psi_hat)
+    scale = kappa_max * p_hat[COMPLIANCE] if kind == "product" and math.isfinite(kappa_max) else abs(psi_hat)
     delta = first_step if math.isfinite(first_step) else 0.1 * scale
     if delta > 0.2 * scale and y_cap == math.inf:
         # a Wald half-width beyond a fifth of psi's scale says nothing about the profile (the likelihood is far from
@@ -350,7 +362,7 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
                 r, p = r_minimum, p_minimum
             else:
                 points.pop()
-        at_cap = kind != "compliance" and p[1] >= kappa_max * (1 - 1e-6)
+        at_cap = kind != "compliance" and p[KAPPA] >= kappa_max * (1 - 1e-6)
         if abs(r - target) <= ROOT_TOLERANCE * target:
             return ProfileEnd(psi_at(delta), p, steps, at_cap)
         slope = points[-1][2]
@@ -380,5 +392,5 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     if hi < math.inf:  # the outer end of the bracket: the interval errs wide
         outer = min((pt for pt in points if pt[0] == hi), key=lambda pt: pt[1])
         return ProfileEnd(psi_at(hi), outer[3], steps, kind != "compliance"
-                          and outer[3][1] >= kappa_max * (1 - 1e-6))
+                          and outer[3][KAPPA] >= kappa_max * (1 - 1e-6))
     return ProfileEnd(None, None, steps)

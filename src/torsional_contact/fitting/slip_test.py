@@ -33,6 +33,7 @@ import numpy as np
 from scipy import optimize, special  # normal tails from special: scipy.stats costs 0.5 s more to import
 
 from .loop_model import LoopModel
+from .parameters import KAPPA, OFFSET, vector
 from .profile import is_large
 
 __all__ = ["unit_scores", "path_length", "critical_value", "GRID"]
@@ -68,10 +69,11 @@ def unit_scores(model: LoopModel, compliance: float, offset: float, foot: np.nda
     directions = []
     basis = None
     large = is_large(model.residual_count, model.size)  # a long record: the Jacobian sparse, three columns dense
+    wanted = slice(KAPPA, OFFSET + 1)  # the columns of kappa, C and theta_0 (``fitting.parameters``)
     for ratio in ratios:
-        p = np.concatenate([[ratio * peak, 0.0, compliance, offset], turning])
+        p = vector(ratio * peak, 0.0, compliance, offset, turning)
         jac = model.torque_at(p, foot, jacobian=True, sparse=large)[3]
-        columns = jac[:, 1:4].toarray() if large else jac[:, 1:4]  # kappa, C, theta_0
+        columns = jac[:, wanted].toarray() if large else jac[:, wanted]  # kappa, C, theta_0
         if basis is None:  # the stick model's own directions (C, theta_0): the same at every T_s
             basis = np.linalg.qr(columns[:, 1:3])[0]
         score = columns[:, 0] - basis @ (basis.T @ columns[:, 0])

@@ -62,6 +62,7 @@ from scipy.interpolate import BSpline
 from scipy.sparse import linalg as sparse_linalg
 
 from .defects import data_derivatives, widened, widened_modulus
+from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, SLIP_TORQUE
 from .profile import covariance
 from .record_checks import MANY_REVERSALS
 
@@ -178,18 +179,18 @@ def widened_for_smoothing(fitted, smooth: SmoothTorque | None):
     result = replace(fitted.result, noise={**fitted.result.noise, "torque": smooth.raw_noise,
                                            "torque_smoothed": smooth.noise, "spline_coefficients": smooth.coefficients})
     if fitted.p is None:  # the straight loop: C is the line's first parameter
-        cov, extra = _sandwich_extra(fitted, smooth, np.array([0]))
+        cov, extra = _sandwich_extra(fitted, smooth, np.array([LINE_COMPLIANCE]))
         ratio = math.sqrt(max((cov[0, 0] + extra[0, 0]) / cov[0, 0], 1.0)) if cov[0, 0] > 0 else 1.0
         return replace(fitted, result=replace(result, compliance=widened(result.compliance, ratio)))
     p = fitted.p
-    cov, extra = _sandwich_extra(fitted, smooth, np.array([0, 1, 2]))
+    cov, extra = _sandwich_extra(fitted, smooth, np.array([SLIP_TORQUE, KAPPA, COMPLIANCE]))
 
     def ratio(gradient):
         own = float(gradient @ cov @ gradient)
         return math.sqrt(max((own + float(gradient @ extra @ gradient)) / own, 1.0)) if own > 0 else 1.0
 
     slip_torque, product, compliance = (ratio(np.array(g, dtype=float)) for g in
-                                        ([1, 0, 0], [0, p[2], p[1]], [0, 0, 1]))
+                                        ([1, 0, 0], [0, p[COMPLIANCE], p[KAPPA]], [0, 0, 1]))
     return replace(fitted, result=replace(result, friction=widened(result.friction, slip_torque),
                                           shear_modulus=widened_modulus(result.shear_modulus, product),
                                           compliance=widened(result.compliance, compliance)))

@@ -18,6 +18,7 @@ from scipy import optimize
 
 from . import profile as profiles
 from .loop_model import LoopModel
+from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, LINE_OFFSET, SLIP_TORQUE, vector
 
 __all__ = ["START_RATIOS", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE", "NEAR_BOUND",
            "off_the_bound"]
@@ -42,7 +43,8 @@ def _stick_line(model: LoopModel):
     torque, twist, s_t, s_theta = model.torque, model.twist, model.torque_noise, model.twist_noise
 
     def fun(q):
-        return (torque - (twist - q[1]) / q[0]) / np.sqrt(s_t**2 + (s_theta / q[0]) ** 2)
+        c, offset = q[LINE_COMPLIANCE], q[LINE_OFFSET]
+        return (torque - (twist - offset) / c) / np.sqrt(s_t**2 + (s_theta / c) ** 2)
 
     slope, intercept = np.polyfit(torque, twist, 1)
     slope = slope if slope > 0 else float(np.ptp(twist) / np.ptp(torque))
@@ -66,7 +68,7 @@ def _grid(model: LoopModel, lines, reversals, peak) -> list[tuple[float, np.ndar
     for compliance, offset in lines:
         for ratio in START_RATIOS:
             for kappa in START_KAPPAS:
-                p = np.concatenate([[ratio * peak, kappa, compliance, offset], reversals])
+                p = vector(ratio * peak, kappa, compliance, offset, reversals)
                 points.append((float(np.sum(model.first_order_distances(p) ** 2)), p))
     return sorted(points, key=lambda point: point[0])
 
@@ -89,13 +91,13 @@ def off_the_bound(model: LoopModel, fitted, lines, reversals, peak, lower, upper
     best point, at kappa = 1, led six records in thirty to a local minimum at the bound kappa = 2 (f 9 % high, G
     not identified), 77 residual variances above the minimum that the other starting kappas reach (f 0.2 % off)."""
     p, s_full, _ = fitted
-    if p[1] < (1.0 - NEAR_BOUND) * kappa_max:
+    if p[KAPPA] < (1.0 - NEAR_BOUND) * kappa_max:
         return fitted
     best = fitted
     for kappa in START_KAPPAS:
-        if kappa == p[1]:
+        if kappa == p[KAPPA]:
             continue
-        start = next(point for value, point in _grid(model, lines, reversals, peak) if point[1] == kappa)
+        start = next(point for value, point in _grid(model, lines, reversals, peak) if point[KAPPA] == kappa)
         candidate = profiles.fit(model, start, lower, upper)
         if candidate[1] < best[1]:
             best = candidate
@@ -112,7 +114,7 @@ def _stick_equivalent(model: LoopModel, line, peak: float, lower, upper, kappa_m
     # a contact that slips at any torque is straight only without its twist (kappa at its bound)
     slip_torque, kappa = (1.05 * largest / onset, START_KAPPAS[1]) if onset > 0 else (1.05 * largest / gross,
                                                                                        kappa_min)
-    p = np.concatenate([[slip_torque, kappa, compliance, offset], foot[model.reversals]])
+    p = vector(slip_torque, kappa, compliance, offset, foot[model.reversals])
     return np.clip(p, lower, upper)
 
 
@@ -137,7 +139,7 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
     largest fitted torque: (p, S, Jacobian).  The intervals are taken against it (the clipped loops, below it,
     count as LR = 0, inside every interval).
     """
-    slip_torque, compliance = float(p[0]), float(p[2])
+    slip_torque, compliance = float(p[SLIP_TORQUE]), float(p[COMPLIANCE])
     s_t, s_theta = model.torque_noise, model.twist_noise
     foot = model.foot_points(p)
     fitted, slope, turning = model.torque_at(p, foot)[:3]
@@ -153,9 +155,9 @@ def _clipping_reference(model: LoopModel, p, s_full: float, lower, upper):
     if spans and max(spans) >= PLATEAU_RESOLVED * level:
         return None  # a plateau the data show
     lower_reference = np.array(lower, dtype=float)
-    lower_reference[0] = (tips + PLATEAU_CLEARANCE * s_t) / gross
+    lower_reference[SLIP_TORQUE] = (tips + PLATEAU_CLEARANCE * s_t) / gross
     start = np.array(p, dtype=float)
-    start[0] = lower_reference[0] * (1 + 1e-6)
+    start[SLIP_TORQUE] = lower_reference[SLIP_TORQUE] * (1 + 1e-6)
     p_ref, s_ref, result = profiles.fit(model, start, lower_reference, upper)
     if s_ref <= s_full:
         return None
