@@ -66,14 +66,15 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from scipy import optimize, signal, sparse, special
+from scipy import optimize, sparse, special
 
 from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, SLIP_TORQUE
 from .profile import covariance, is_large
 from .results import Estimate
 
 __all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "twist_rate", "rate_window",
-           "shifted_twist", "score_statistics", "corrected_record", "corrected_fit", "widened", "widened_modulus"]
+           "local_cubic", "shifted_twist", "score_statistics", "corrected_record", "corrected_fit", "widened",
+           "widened_modulus"]
 
 #: The defects, in the order of their columns: (name, unit of the size, unit without a time column).
 KINDS = (("torque offset", "N m", "N m"), ("twist drift", "rad/s", "rad per sample"), ("lag", "s", "samples"))
@@ -141,8 +142,31 @@ def twist_rate(twist: np.ndarray, clock: np.ndarray, reversals=None) -> np.ndarr
     n = twist.size
     if n < 5:
         return np.gradient(twist, clock) if n > 1 else np.zeros(n)
-    per_sample = signal.savgol_filter(twist, rate_window(n, reversals), 3, deriv=1)
+    per_sample = local_cubic(twist, rate_window(n, reversals), derivative=True)
     return per_sample / np.gradient(clock)
+
+
+def local_cubic(values: np.ndarray, window: int, derivative: bool = False) -> np.ndarray:
+    """The value (or the derivative per sample) at every sample of the cubic fitted by least squares to the
+    ``window`` (odd) samples around it; within half a window of either end, of the cubic fitted to the first or
+    last window (Savitzky and Golay's filter, as ``scipy.signal.savgol_filter`` with mode "interp", without importing
+    scipy.signal, which loads scipy.stats)."""
+    half = window // 2
+    offsets = np.arange(-half, half + 1, dtype=float)
+    # the least-squares operator of the cubic in the offsets: row 0 gives the value at 0, row 1 the slope there
+    operator = np.linalg.pinv(np.vander(offsets, 4, increasing=True))
+    row = operator[1 if derivative else 0]
+    out = np.empty(values.size)
+    out[half:values.size - half] = np.convolve(values, row[::-1], mode="valid")
+    for ends, block in ((slice(0, half), values[:window]), (slice(values.size - half, values.size), values[-window:])):
+        coefficients = operator @ block
+        at = offsets[:half] if ends.start == 0 else offsets[half + 1:]
+        powers = np.vander(at, 4, increasing=True)
+        if derivative:
+            out[ends] = powers[:, :3] @ (coefficients[1:] * np.arange(1, 4))
+        else:
+            out[ends] = powers @ coefficients
+    return out
 
 
 def rate_window(n: int, reversals) -> int:
@@ -160,7 +184,7 @@ def shifted_twist(twist: np.ndarray, clock: np.ndarray, reversals, lag: float) -
     n = twist.size
     if n < 5:
         return np.interp(clock + lag, clock, twist)
-    smooth = signal.savgol_filter(twist, rate_window(n, reversals), 3)
+    smooth = local_cubic(twist, rate_window(n, reversals))
     return twist + np.interp(clock + lag, clock, smooth) - smooth
 
 
