@@ -44,8 +44,8 @@ kappa <= ``KAPPA_MAX``, each U_j within ``REVERSAL_REACH`` noise levels of its s
 residuals with their analytic Jacobian (``fitting.profile.fit``), from the best point of a grid of
 starting values (T_s from 0.75 to 1.05 times the largest torque, kappa from 0.02 to 1; C and
 theta_0 from a straight-line fit to all samples and to the central ones, |T| < max|T| / 2, which
-stay in stick on every branch of a symmetric loop).  lmfit would add named parameters and the
-same covariance, nothing the problem needs.
+stay in stick on every branch of a symmetric loop).  A slipping loop that another contact model
+fits clearly better gets no friction value (``fitting.model_check``).
 
 Did it slip?
 ------------
@@ -121,7 +121,7 @@ from scipy import special  # quantiles from special: scipy.stats costs 0.5 s mor
 
 from .. import models, units
 from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
-from . import defects
+from . import defects, model_check
 from . import profile as profiles
 from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
@@ -249,6 +249,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                            list(whole.warnings), whole.spikes, settings)
     if check_defects:
         fitted = defects.corrected_fit(fitted, clock, whole, settings, _fit_prepared, time is not None)
+        fitted = model_check.checked_model(fitted, settings, _fit_prepared)  # the contact model the loop prefers
     fitted = widened_for_smoothing(fitted, smooth)
     result = fitted.result
     if modulus is not None:

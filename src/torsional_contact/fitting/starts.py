@@ -20,10 +20,12 @@ from . import profile as profiles
 from .loop_model import LoopModel
 from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, LINE_OFFSET, SLIP_TORQUE, vector
 
-__all__ = ["START_RATIOS", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE", "NEAR_BOUND",
-           "off_the_bound"]
+__all__ = ["START_RATIOS", "start_ratios", "START_KAPPAS", "PLATEAU_SLOPE", "PLATEAU_RESOLVED", "PLATEAU_CLEARANCE",
+           "NEAR_BOUND", "off_the_bound"]
 
-#: The starting grid: T_s / max|T| (0.75: a gross-slip plateau) and kappa.
+#: The starting grid: T_s / max|T| (0.75: the cylinders' gross-slip plateau at the largest torque) and kappa.  A
+#: model whose gross-slip torque T*_gs lies above 4/3 slips up to larger T* (the flat punch to pi/2): its grid also
+#: starts at 1 / T*_gs and half-way from there to 0.75 (``start_ratios``).
 START_RATIOS = (0.75, 0.8, 0.87, 0.95, 1.05)
 START_KAPPAS = (0.02, 0.2, 1.0)
 #: A gross-slip plateau is resolved when its samples (fitted slope below ``PLATEAU_SLOPE`` / C) at one tip (a branch
@@ -66,11 +68,21 @@ def _grid(model: LoopModel, lines, reversals, peak) -> list[tuple[float, np.ndar
     """The grid of starting values in (T_s, kappa, line), each with its first-order sum of squares, best first."""
     points = []
     for compliance, offset in lines:
-        for ratio in START_RATIOS:
+        for ratio in start_ratios(model.contact.gross_slip_torque):
             for kappa in START_KAPPAS:
                 p = vector(ratio * peak, kappa, compliance, offset, reversals)
                 points.append((float(np.sum(model.first_order_distances(p) ** 2)), p))
     return sorted(points, key=lambda point: point[0])
+
+
+def start_ratios(gross_slip_torque: float) -> tuple[float, ...]:
+    """T_s / max|T| of the starting grid for a model whose gross-slip torque is ``gross_slip_torque`` (T*):
+    ``START_RATIOS``, and below 0.75 the plateau's own ratio 1 / T*_gs and the point half-way to 0.75 (a loop of a
+    flat punch at T* 1.5 has T_s / max|T| = 0.67, outside the cylinders' grid: its fit stopped in stick, the slip
+    loop 30-40 residual variances below it unvisited)."""
+    plateau = 1.0 / gross_slip_torque
+    below = (plateau, 0.5 * (plateau + START_RATIOS[0])) if plateau < START_RATIOS[0] - 1e-12 else ()
+    return (*below, *START_RATIOS)
 
 
 def _start(model: LoopModel, lines, reversals, peak) -> np.ndarray:

@@ -18,7 +18,8 @@ of the intervals and the coverage of the bounds, each as k of n with its exact (
 (``clopper_pearson``), the median relative bias of the identified values with its standard error, and the
 warning rate (a fit whose ``warnings`` is not empty) with the rate at which a warning names the defect
 (``DEFECT_WORDS``).  A record is treated honestly when every reported interval or bound covers the truth, or a
-warning names its defect, or the fit refuses it.
+warning names its defect, or the fit refuses it.  A scenario whose records come from another contact model than
+the one the fit assumes (``Scenario.model``) has that misspecification as its defect ("model").
 
 Gross slip (``plateau_friction``): a twist-controlled rig that drives the contact into gross slip reads the
 friction from the plateau torque T_gs, f = T_gs / (T*_gs F a / 2) with T*_gs the model's gross-slip torque
@@ -56,7 +57,8 @@ HANDLING = {"check_defects": (True, False), "time": ("time", None)}
 DEFECT_WORDS = {"lag": ("lag",), "drift": ("drift",), "torque_offset": ("offset",), "spikes": ("spike",),
                 "exact_torque": ("exact", "noise floor", "resolution"), "skip_half_cycle": ("virgin",),
                 "invert_twist": ("sign", "inverted"), "torque_step": ("quantis", "resolution", "step"),
-                "twist_step": ("quantis", "resolution", "step"), "friction_end": ("cycle", "running", "drift")}
+                "twist_step": ("quantis", "resolution", "step"), "friction_end": ("cycle", "running", "drift"),
+                "model": ("model:",)}
 
 
 def clopper_pearson(successes: int, trials: int, confidence: float = 0.95) -> tuple[float, float]:
@@ -288,9 +290,12 @@ def run_study(scenarios, *, replicates: int, seed: int, specimen: RigSpecimen | 
                 rows.append(row)
                 continue
             fits = []
+            # a record of another contact than the fit's (the default model): misspecified, its own defect
+            misspecified = scenario.model is not None and models.get(scenario.model) is not models.get(None)
+            named_defects = {**scenario.defects, "model": misspecified}
             for record in records:
                 chosen = {k: (record.time if k == "time" and v is not None else v) for k, v in options.items()}
-                fits.append(fit_record(fit, record, chosen, _truth(record), scenario.defects))
+                fits.append(fit_record(fit, record, chosen, _truth(record), named_defects))
             row["summary"] = summarise(fits)
             rows.append(row)
             if progress is not None:

@@ -1,0 +1,77 @@
+"""The contact model a loop prefers, and the starting grid of models that slip beyond T* = 4/3.
+
+Records from the independent rig generator (``verification.rig_records``: each model's monotonic numbers and a
+Masing walk of its own), two cycles of 200 samples, noise 0.5 % of the torque range and 1e-5 rad.  The
+references are the generator's truth (f = 0.6) and its model; the fit never sees which model made the record.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import pytest
+
+from torsional_contact import fit_loop
+from torsional_contact.fitting import model_check, starts
+from torsional_contact.verification.rig_records import RigSpecimen, rig_record
+
+
+def _record(model: str, amplitude: float, seed: int):
+    specimen = RigSpecimen(model=model)
+    return rig_record(specimen, control="torque", amplitude=amplitude, cycles=2, frequency=1.0, sample_rate=200.0,
+                      rng=seed)
+
+
+def _fit(record, **kwargs):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return fit_loop(record.torque, record.twist, radius=record.specimen.radius,
+                        normal_force=record.specimen.normal_force, time=record.time, **kwargs)
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_a_sphere_read_as_cylinders_gets_no_friction_value(seed):
+    # a Hertz record read with the cylinders' model: f 14 % low with intervals that excluded 0.6 in every record,
+    # and the misfit read as a 13 ms lag; the residual sums (about 400 degrees of freedom) are ~850 for the
+    # cylinders against ~390 for Hertz's model and ~400 for uniform pressure, far beyond MODEL_CRITICAL
+    record = _record("hertz", 1.1, seed)
+    fit = _fit(record)
+    assert fit.friction.value is None and fit.shear_modulus.value is None
+    model = [w for w in fit.warnings if w.startswith("model:")]
+    assert len(model) == 1 and "'cylinder'" in model[0]
+    preferred = model[0].split("'")[1]
+    assert preferred in ("hertz", "half-space")  # uniform pressure and Hertz's are within noise of each other here
+    # the friction with the preferred model is said (uniform pressure reads 0.53-0.55 here: the check names the model
+    # the data prefer, it does not make that model right)
+    assert 0.0 < float(model[0].split("(f ")[1].split()[0]) < 1.0
+    own = _fit(record, model="hertz")
+    assert not any(w.startswith("model:") for w in own.warnings)
+    lo, hi = own.friction.interval
+    assert lo <= record.truth["friction"] <= hi
+
+
+def test_the_check_compares_every_model_of_the_table():
+    record = _record("cylinder", 1.3, 3)
+    fit = _fit(record)
+    assert fit.friction.value is not None and fit.warnings == ()
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_a_flat_punch_beyond_four_thirds_is_fitted_with_its_model(seed):
+    # T* 1.5 of a flat punch (stuck to 4/3, gross slip at pi/2): T_s / max|T| = 0.67 lies outside the cylinders'
+    # starting grid (from 0.75), and the fit with the punch's own model stopped in stick, its slip loop 30-40
+    # residual variances lower never visited.  Without the defect checks: with them, a lag of about 1.5 ms explains
+    # this loop's small opening as well as slip does, and the fit gives a bound (docs/fitting.md, "Lag against slip")
+    record = _record("flat-punch", 1.5, seed)
+    fit = _fit(record, model="flat-punch", check_defects=False)
+    assert fit.slip_detected
+    lo, hi = fit.friction.interval
+    assert lo <= record.truth["friction"] <= hi
+
+
+def test_start_ratios_reach_the_models_plateau():
+    assert starts.start_ratios(4.0 / 3.0) == starts.START_RATIOS
+    assert starts.start_ratios(1.1780972450961724) == starts.START_RATIOS  # Hertz: 3 pi / 8, plateau at 0.85
+    ratios = starts.start_ratios(1.5707963267948966)  # the flat punch: pi / 2
+    assert ratios[0] == pytest.approx(2.0 / 3.141592653589793, rel=1e-15) and ratios[1] < starts.START_RATIOS[0]
+    assert model_check.MODEL_CRITICAL == pytest.approx(15.137, abs=1e-3)
