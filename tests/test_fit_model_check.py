@@ -36,7 +36,7 @@ def test_a_sphere_read_as_cylinders_gets_no_friction_value(seed):
     # cylinders against ~390 for Hertz's model and ~400 for uniform pressure, far beyond MODEL_CRITICAL
     record = _record("hertz", 1.1, seed)
     fit = _fit(record)
-    assert fit.friction.value is None and fit.shear_modulus.value is None
+    assert fit.friction.value is None and fit.shear_modulus.value is None and fit.compliance.value is None
     model = [w for w in fit.warnings if w.startswith("model:")]
     assert len(model) == 1 and "'cylinder'" in model[0]
     preferred = model[0].split("'")[1]
@@ -44,6 +44,10 @@ def test_a_sphere_read_as_cylinders_gets_no_friction_value(seed):
     # the friction with the preferred model is said (uniform pressure reads 0.53-0.55 here: the check names the model
     # the data prefer, it does not make that model right)
     assert 0.0 < float(model[0].split("(f ")[1].split()[0]) < 1.0
+    # knowing G does not bring the friction back (the fit with G fixed would be read under the rejected model)
+    known = _fit(record, shear_modulus="80 GPa", gauge_length="20 mm")
+    assert known.friction.value is None and known.compliance.value is None
+    assert any(w.startswith("model:") for w in known.warnings)
     own = _fit(record, model="hertz")
     assert not any(w.startswith("model:") for w in own.warnings)
     lo, hi = own.friction.interval

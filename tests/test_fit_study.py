@@ -14,6 +14,7 @@ from torsional_contact.verification.fit_study import (
     clopper_pearson,
     handling_options,
     median_with_stderr,
+    per_cycle_study,
     plateau_friction,
     run_study,
     summarise,
@@ -107,6 +108,52 @@ def test_a_fit_without_the_switches_says_handling_not_available():
     assert off["summary"] is None and set(off["not_available"]) == set(HANDLING)
     assert on["summary"]["friction"]["interval_coverage"]["count"] == 2 and len(calls) == 2
     assert on["summary"]["shear_modulus"]["bound_coverage"]["count"] == 2  # 80 GPa lies in [1 GPa, inf)
+
+
+def test_per_cycle_study_counts_against_each_cycles_truth():
+    # a manufactured per-cycle fit: cycle k's interval is the truth shifted by +0.6 of the change per cycle with a
+    # half-width of 0.5 of it, so it misses the cycle's mean (strict) but meets its branches' range (mean +- a quarter
+    # of the change); the last cycle's friction is only a bound below the truth (counted apart)
+    scenario = Scenario("running-in", "twist", 2.5e-3, cycles=6, sample_rate=40.0,
+                        defects={"friction_end": 0.45, "running_in_cycles": 6})
+    seen = {}
+
+    def per_cycle_fit(torque, twist, *, radius, normal_force, per_cycle, check_defects, time):
+        assert per_cycle and check_defects and time is not None
+        truth = seen["truth"]
+        step = abs(truth[1] - truth[0])
+        cycles = [{"cycle": k, "friction": {"value": f + 0.6 * step, "interval": (f + 0.1 * step, f + 1.1 * step)}}
+                  for k, f in enumerate(truth[:-1], start=1)]
+        cycles.append({"cycle": len(truth), "friction": {"value": None, "interval": (truth[-1] - step, None)}})
+
+        class Result:
+            pass
+        result = Result()
+        result.cycles = cycles
+        return result
+
+    original = Scenario.record
+
+    def record(self, specimen, rng):
+        out = original(self, specimen, rng)
+        seen["truth"] = out.truth["friction_per_cycle"]
+        return out
+
+    Scenario.record = record
+    try:
+        study = per_cycle_study(scenario, replicates=2, seed=1, fit=per_cycle_fit)
+    finally:
+        Scenario.record = original
+    assert study["cycles"] == 12 and study["records"] == 2
+    assert study["interval_coverage"]["count"] == 0 and study["interval_coverage"]["trials"] == 10
+    assert study["range_coverage"]["count"] == 10
+    assert study["bound_coverage"]["count"] == 2 and study["bound_coverage"]["trials"] == 2
+    truth = np.asarray(seen["truth"])
+    expected = float(np.median(0.6 * abs(truth[1] - truth[0]) / truth[:-1]))
+    assert_close(study["median_bias"], expected, "the median of the manufactured errors", rtol=1e-12)
+    with pytest.raises(ValueError, match="running-in"):
+        per_cycle_study(Scenario("clean", "torque", 1.2, cycles=1.0, sample_rate=50), replicates=1, seed=0,
+                        fit=per_cycle_fit)
 
 
 def test_the_real_fit_on_one_record_each_way():

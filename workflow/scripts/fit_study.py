@@ -16,7 +16,14 @@ import time
 
 from torsional_contact.provenance import latex_escape, provenance, write_json, write_macros, write_text
 from torsional_contact.typeset import sci
-from torsional_contact.verification.fit_study import PARAMETERS, Scenario, clopper_pearson, run_study, window_study
+from torsional_contact.verification.fit_study import (
+    PARAMETERS,
+    Scenario,
+    clopper_pearson,
+    per_cycle_study,
+    run_study,
+    window_study,
+)
 from torsional_contact.verification.rig_records import RigSpecimen
 
 SYMBOLS = {"friction": "f", "shear_modulus": "G", "compliance": "C"}
@@ -209,6 +216,20 @@ def macros(rows, window, config, replicates, long_replicates) -> dict:
     return out
 
 
+def per_cycle_macros(study) -> dict:
+    """The text's numbers of the per-cycle study (none without one)."""
+    if study is None:
+        return {}
+    strict, in_range = study["interval_coverage"], study["range_coverage"]
+    out = {"fs-pc-records": str(study["records"]), "fs-pc-cycles": str(study["cycles"]),
+           "fs-pc-cov": f"{strict['count']}/{strict['trials']}",
+           "fs-pc-range-cov": f"{in_range['count']}/{in_range['trials']}",
+           "fs-pc-bias": _pct(study["median_bias"], 2), "fs-pc-within": _pct(study["within"], 1)}
+    if strict["trials"]:
+        out["fs-pc-cov-lo"], out["fs-pc-cov-hi"] = (f"{100 * x:.0f}" for x in strict["interval"])
+    return out
+
+
 def scenarios_of(config, long_replicates: int):
     out = []
     for entry in config["scenarios"]:
@@ -257,16 +278,22 @@ def main():
     window = window_study(config["window"]["levels"], config["window"]["plateau_twists"], replicates=replicates,
                           seed=config["seed"] + 2, specimen=specimen, cycles=config["cycles"],
                           sample_rate=config["sample_rate"])
+    per_cycle = None
+    if config.get("per_cycle"):  # the scenario (a running-in record) whose cycles are fitted one by one
+        scenario = next((s for s, _ in scenarios_of(config, 0) if s.name == config["per_cycle"]), None)
+        if scenario is None:
+            parser.error(f"fit_study.per_cycle names no scenario of the configuration: {config['per_cycle']!r}")
+        per_cycle = per_cycle_study(scenario, replicates=replicates, seed=config["seed"] + 3, specimen=specimen)
     print(f"fit study: {time.process_time() - started:.1f} CPU-s", flush=True)  # the log, not the data
     meta = {"method": "fit_loop on rig records (verification.rig_records), handling on and off; plateau estimator",
             "replicates": replicates, "long_replicates": long_replicates, "seed": config["seed"],
             "specimen": config["specimen"]}
-    write_json(args.json, {"scenarios": rows, "window": window, "config": config}, **meta)
+    write_json(args.json, {"scenarios": rows, "window": window, "per_cycle": per_cycle, "config": config}, **meta)
     write_text(args.csv, csv_text(rows, window, provenance(**meta)))
     write_text(args.tex, scenario_table(rows, replicates))
     write_text(args.window_tex, window_table(window))
-    write_macros(args.macros, macros(rows, window, config, replicates, long_replicates),
-                 "workflow/scripts/fit_study.py")
+    write_macros(args.macros, {**macros(rows, window, config, replicates, long_replicates),
+                               **per_cycle_macros(per_cycle)}, "workflow/scripts/fit_study.py")
 
 
 if __name__ == "__main__":

@@ -11,8 +11,9 @@ normalisation T* = 2 T / (f F a), so the residual sums of their fits to the same
 comparison of non-nested models with equal numbers of parameters, in which the smaller sum is the better
 model (Akaike's criterion, Vuong's test).  When another model's sum lies below the chosen model's by more than
 ``MODEL_CRITICAL`` residual variances (the variance of the better fit), the data reject the chosen model: the
-result then gives no friction value or modulus (f depends on the contact model), and its warning names the
-model the loop prefers and the friction fitted with it.
+result then gives no friction value, modulus or compliance (each depends on the contact model: the sphere's
+records read as cylinders gave C 45-50 % high as well), and its warning names the model the loop prefers and
+the friction fitted with it.
 
 Measured on the rig generator (two cycles of 200 samples, noise 0.5 % of the torque range and 1e-5 rad,
 residual sums over about 400 degrees of freedom): a Hertz record (T* 1.1) gave 850 with the cylinders'
@@ -84,8 +85,8 @@ def residual_sums(fitted, settings, fit_prepared) -> dict:
 
 def checked_model(fitted, settings, fit_prepared):
     """``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) unchanged when no other model of the table fits its record
-    better by more than ``MODEL_CRITICAL`` residual variances; else with no friction value or modulus and a
-    ``model`` warning (module docstring)."""
+    better by more than ``MODEL_CRITICAL`` residual variances; else with no friction value, modulus or compliance
+    and a ``model`` warning (module docstring)."""
     if fitted.p is None:
         return fitted
     chosen = settings[-1].name
@@ -101,11 +102,11 @@ def checked_model(fitted, settings, fit_prepared):
     there = "" if slip_torque is None else f" (f {2.0 * slip_torque / (force * a):.3g} with it)"
     note = (f"model: the loop fits the {best!r} model better than {chosen!r} by {gain:.1f} residual variances "
             f"(above {MODEL_CRITICAL:.1f}, on its first {min(model_turning(fitted), CHECK_TURNING)} turning points)"
-            f"{there}; f and G depend on the contact model, so none is given: fit with model={best!r} if that is "
-            "the contact of the test")
+            f"{there}; f, G and the compliance depend on the contact model, so none is given: fit with "
+            f"model={best!r} if that is the contact of the test")
     withheld = Estimate(None, None, (None, None), identified=False)
-    result = replace(fitted.result, friction=withheld, shear_modulus=withheld, noise_limited=True,
-                     warnings=(*fitted.result.warnings, note))
+    result = replace(fitted.result, friction=withheld, shear_modulus=withheld, compliance=withheld,
+                     noise_limited=True, warnings=(*fitted.result.warnings, note))
     return replace(fitted, result=result)
 
 

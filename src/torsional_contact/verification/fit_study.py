@@ -44,7 +44,7 @@ from .. import models
 from .rig_records import RigDefects, RigSpecimen, rig_record
 
 __all__ = ["clopper_pearson", "plateau_friction", "Scenario", "HANDLING", "handling_options", "fit_record",
-           "summarise", "run_study", "window_study", "DEFECT_WORDS", "PARAMETERS"]
+           "summarise", "run_study", "per_cycle_study", "window_study", "DEFECT_WORDS", "PARAMETERS"]
 
 #: The fitted quantities, by the name of the ``LoopFit`` attribute and the truth's key.
 PARAMETERS = ("friction", "shear_modulus", "compliance")
@@ -301,6 +301,53 @@ def run_study(scenarios, *, replicates: int, seed: int, specimen: RigSpecimen | 
             if progress is not None:
                 progress(row)
     return rows
+
+
+def per_cycle_study(scenario: Scenario, *, replicates: int, seed: int, specimen: RigSpecimen | None = None,
+                    fit=None) -> dict:
+    """The per-cycle fit (``fit_loop(..., per_cycle=True)``, handling on) on ``replicates`` records of ``scenario``,
+    a running-in record (its truth has ``friction_per_cycle``): each cycle's friction against the cycle's true
+    friction, the mean of its two branches'.  Returns, apart, the interval coverage and the bound coverage over all
+    cycles of all records (k of n with Clopper-Pearson intervals), the median relative bias of the values with its
+    standard error, the cycles fitted, ``within``: the largest relative change of the true friction across one
+    cycle (one f is fitted per cycle while it changes by that much), and ``range_coverage``: how often the interval
+    meets the cycle's range of friction (its two branches', the mean +- a quarter of the change per cycle)."""
+    if fit is None:
+        from .. import fit_loop as fit
+    if isinstance(replicates, bool) or int(replicates) != replicates or replicates < 1:
+        raise ValueError(f"replicates must be an integer >= 1, got {replicates!r}")
+    specimen = RigSpecimen() if specimen is None else specimen
+    rng = np.random.default_rng(seed)
+    intervals, bounds, errors, within, in_range = [], [], [], 0.0, []
+    for _ in range(int(replicates)):
+        record = scenario.record(specimen, rng)
+        truth = np.asarray(record.truth.get("friction_per_cycle", ()), dtype=float)
+        if truth.size < 2:
+            raise ValueError(f"scenario {scenario.name!r} is not a running-in record (defects need friction_end)")
+        within = max(within, float(np.max(np.abs(np.diff(truth)) / 2.0 / truth[1:])))
+        quarter = 0.25 * np.abs(np.gradient(truth))  # half the spread of the cycle's two branches' friction
+        options, _ = handling_options(fit, "on", record)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # counted from the result
+            result = fit(record.torque, record.twist, radius=specimen.radius, normal_force=specimen.normal_force,
+                         per_cycle=True, **options)
+        for entry in result.cycles:
+            friction = entry["friction"]
+            lo, hi = friction["interval"]
+            value = truth[entry["cycle"] - 1]
+            covered = bool((lo is None or lo <= value) and (hi is None or value <= hi))
+            if friction["value"] is not None:
+                intervals.append(covered)
+                errors.append((friction["value"] - value) / value)
+                spread = quarter[entry["cycle"] - 1]
+                in_range.append(bool((lo is None or lo - spread <= value) and (hi is None or value <= hi + spread)))
+            elif lo is not None or hi is not None:
+                bounds.append(covered)
+    bias, bias_se = median_with_stderr(errors)
+    return {"scenario": scenario.name, "records": int(replicates), "cycles": len(intervals) + len(bounds),
+            "interval_coverage": _rate(sum(intervals), len(intervals)),
+            "bound_coverage": _rate(sum(bounds), len(bounds)), "median_bias": bias, "median_bias_stderr": bias_se,
+            "within": within, "range_coverage": _rate(sum(in_range), len(in_range))}
 
 
 def window_study(levels, plateau_twists, *, replicates: int, seed: int, specimen: RigSpecimen | None = None,
