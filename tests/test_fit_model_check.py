@@ -11,7 +11,7 @@ import warnings
 
 import pytest
 
-from torsional_contact import fit_loop
+from torsional_contact import fit_loop, models
 from torsional_contact.fitting import model_check, starts
 from torsional_contact.verification.rig_records import RigSpecimen, rig_record
 
@@ -48,16 +48,47 @@ def test_a_sphere_read_as_cylinders_gets_no_friction_value(seed):
     known = _fit(record, shear_modulus="80 GPa", gauge_length="20 mm")
     assert known.friction.value is None and known.compliance.value is None
     assert any(w.startswith("model:") for w in known.warnings)
+    # nor do the cycles, each fitted under the same rejected model
+    cycles = _fit(record, per_cycle=True).cycles
+    assert cycles and all(c["friction"]["value"] is None and c["friction"]["withheld"] == "model" for c in cycles)
+    assert all(any(w.startswith("withheld:") for w in c["warnings"]) for c in cycles)
+    assert fit.as_dict()["friction"]["withheld"] == "model"
     own = _fit(record, model="hertz")
     assert not any(w.startswith("model:") for w in own.warnings)
     lo, hi = own.friction.interval
     assert lo <= record.truth["friction"] <= hi
 
 
-def test_the_check_compares_every_model_of_the_table():
-    record = _record("cylinder", 1.3, 3)
-    fit = _fit(record)
+def test_the_check_compares_every_model_of_the_table(monkeypatch):
+    # every model of the table is fitted to the record's stretch, and a cylinders' record keeps its friction: no
+    # other model's sum lies below the cylinders' by MODEL_CRITICAL residual variances
+    seen = {}
+    original = model_check.residual_sums
+
+    def spy(*args, **kwargs):
+        seen.update(original(*args, **kwargs))
+        return dict(seen)
+
+    monkeypatch.setattr(model_check, "residual_sums", spy)
+    fit = _fit(_record("cylinder", 1.3, 3))
+    assert set(seen) == set(models.names()) | {None}
+    dof = seen.pop(None)
+    best = min(value for value, _ in seen.values())
+    assert (seen["cylinder"][0] - best) / (best / dof) < model_check.MODEL_CRITICAL
     assert fit.friction.value is not None and fit.warnings == ()
+
+
+@pytest.mark.sweep
+def test_smoothed_cylinder_records_keep_their_model():
+    # records of more than ten cycles are smoothed; the check reads their raw torque (on the smoothed channel the
+    # gain of the flat punch over the cylinders scattered twice as widely as the chi-square bound allows): ten
+    # cylinders' records of 11.5 cycles at 500 samples per cycle, none rejected (the bound: 5e-5 per model and
+    # record; the flat punch sits 10 +- 8 residual variances above the cylinders here)
+    for seed in range(40, 50):
+        record = rig_record(control="torque", amplitude=1.3, cycles=11.5, frequency=1.0, sample_rate=500.0, rng=seed)
+        fit = _fit(record)
+        assert not any(w.startswith("model:") for w in fit.warnings), (seed, fit.warnings)
+        assert fit.noise.get("torque_smoothed") is not None  # the smoothed path was taken
 
 
 @pytest.mark.parametrize("seed", [1, 2])

@@ -66,15 +66,15 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from scipy import optimize, sparse, special
+from scipy import sparse, special
 
+from .lag import lag_line, rate_window, shifted_twist, twist_rate
 from .parameters import COMPLIANCE, KAPPA, LINE_COMPLIANCE, SLIP_TORQUE
 from .profile import covariance, is_large
 from .results import Estimate
 
-__all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "twist_rate", "rate_window",
-           "local_cubic", "shifted_twist", "score_statistics", "corrected_record", "corrected_fit", "widened",
-           "widened_modulus"]
+__all__ = ["KINDS", "LM_LEVEL", "LM_CRITICAL", "data_derivatives", "defect_directions", "score_statistics",
+           "corrected_record", "corrected_fit", "widened", "widened_modulus"]
 
 #: The defects, in the order of their columns: (name, unit of the size, unit without a time column).
 KINDS = (("torque offset", "N m", "N m"), ("twist drift", "rad/s", "rad per sample"), ("lag", "s", "samples"))
@@ -92,8 +92,6 @@ STEPS = 4
 STEP_GAIN = 0.1
 #: Columns of ``KINDS``.
 OFFSET, DRIFT, LAG = 0, 1, 2
-#: The window of the twist's derivative (``twist_rate``) as a share of the median branch.
-RATE_WINDOW = 1.0 / 6.0
 
 
 def data_derivatives(fitted) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -126,66 +124,6 @@ def defect_directions(twist: np.ndarray, clock: np.ndarray, reversals=None) -> n
     out[1, 1] = clock - 0.5 * (clock[0] + clock[-1])
     out[2, 1] = -twist_rate(twist, clock, reversals)
     return out
-
-
-def twist_rate(twist: np.ndarray, clock: np.ndarray, reversals=None) -> np.ndarray:
-    """theta'(t) (rad per unit of ``clock``): the derivative of a local cubic least-squares fit (Savitzky-Golay)
-    over ``RATE_WINDOW`` of the median branch (the samples between turning points ``reversals``).
-
-    The lag's size is a regression on this derivative: its noise attenuates the estimate by var(signal) /
-    (var(signal) + var(noise)) (errors in the variable).  Differences of a five-sample running mean kept 0.2
-    of the twist noise per sample interval, which at 500 samples per cycle and a twist noise of 2 % of the
-    amplitude read a 2 ms lag as 1.6 ms; the window that grows with the branch keeps the noise's share of the
-    derivative's variance near (noise/amplitude)^2 whatever the sampling rate, at a bias of order
-    (omega h)^4 for a drive of angular frequency omega (half-window h, under 1e-2 at ``RATE_WINDOW``).
-    """
-    n = twist.size
-    if n < 5:
-        return np.gradient(twist, clock) if n > 1 else np.zeros(n)
-    per_sample = local_cubic(twist, rate_window(n, reversals), derivative=True)
-    return per_sample / np.gradient(clock)
-
-
-def local_cubic(values: np.ndarray, window: int, derivative: bool = False) -> np.ndarray:
-    """The value (or the derivative per sample) at every sample of the cubic fitted by least squares to the
-    ``window`` (odd) samples around it; within half a window of either end, of the cubic fitted to the first or
-    last window (Savitzky and Golay's filter, as ``scipy.signal.savgol_filter`` with mode "interp", without importing
-    scipy.signal, which loads scipy.stats)."""
-    half = window // 2
-    offsets = np.arange(-half, half + 1, dtype=float)
-    # the least-squares operator of the cubic in the offsets: row 0 gives the value at 0, row 1 the slope there
-    operator = np.linalg.pinv(np.vander(offsets, 4, increasing=True))
-    row = operator[1 if derivative else 0]
-    out = np.empty(values.size)
-    out[half:values.size - half] = np.convolve(values, row[::-1], mode="valid")
-    for ends, block in ((slice(0, half), values[:window]), (slice(values.size - half, values.size), values[-window:])):
-        coefficients = operator @ block
-        at = offsets[:half] if ends.start == 0 else offsets[half + 1:]
-        powers = np.vander(at, 4, increasing=True)
-        if derivative:
-            out[ends] = powers[:, :3] @ (coefficients[1:] * np.arange(1, 4))
-        else:
-            out[ends] = powers @ coefficients
-    return out
-
-
-def rate_window(n: int, reversals) -> int:
-    """The odd window (samples) of ``twist_rate``: ``RATE_WINDOW`` of the median branch, at least 5, at most n."""
-    ends = np.concatenate([[0], np.asarray([] if reversals is None else reversals, dtype=int), [n - 1]])
-    branch = float(np.median(np.diff(ends))) if ends.size > 2 else float(n)
-    return min(max(int(branch * RATE_WINDOW) | 1, 5), n if n % 2 else n - 1)
-
-
-def shifted_twist(twist: np.ndarray, clock: np.ndarray, reversals, lag: float) -> np.ndarray:
-    """The twist at t_i + ``lag``: its smooth part (the local cubic fit of ``twist_rate``) moved by the lag, each
-    sample's noise kept.  Interpolating the raw samples instead would average neighbours' noise (by up to half
-    its variance at half-sample shifts), which lowers the residual sum at some lags and not at others and so
-    biases both the lag and the slip test against the straight loop."""
-    n = twist.size
-    if n < 5:
-        return np.interp(clock + lag, clock, twist)
-    smooth = local_cubic(twist, rate_window(n, reversals))
-    return twist + np.interp(clock + lag, clock, smooth) - smooth
 
 
 def _perp(q: np.ndarray, z: np.ndarray) -> np.ndarray:
@@ -288,45 +226,6 @@ def _step(fitted, clock, kinds):
     return step, gain, r, jac, z
 
 
-def lag_line(model, clock: np.ndarray, drift: bool = False):
-    """The straight loop with a lag: (S, lag, S of the straight loop without it) by least squares on the residuals
-    (T_i - (theta_i + tau theta'_i - theta_0) / C) / w (module docstring's table: theta_i + tau theta'_i is the
-    twist at t_i + tau); with ``drift`` both fits also take out a twist drift r (t_i - t_mid).  ``model`` needs
-    ``torque``, ``twist``, ``torque_noise``, ``twist_noise`` and ``reversals``."""
-    torque, twist = model.torque, model.twist
-    s_t, s_w = model.torque_noise, model.twist_noise
-    rate = twist_rate(twist, clock, model.reversals)
-    centred = clock - 0.5 * (clock[0] + clock[-1])
-
-    def fun(q, lagged=True):
-        compliance, offset, tau, r = q
-        w = np.sqrt(s_t**2 + (s_w / compliance) ** 2)
-        return (torque - (twist + (tau * rate if lagged else 0.0) - r * centred - offset) / compliance) / w
-
-    slope, intercept = np.polyfit(torque, twist, 1)
-    if not slope > 0:
-        return None
-    free = [True, True, True, drift]
-    start = np.array([slope, intercept, 0.0, 0.0])
-    lower, upper = np.array([slope * 1e-6, -np.inf, -np.inf, -np.inf]), np.full(4, np.inf)
-
-    def fitted_sum(lagged):
-        use = np.array(free) & np.array([True, True, lagged, True])
-
-        def residual(q):
-            full = np.zeros(4)
-            full[use] = q
-            return fun(full, lagged)
-
-        out = optimize.least_squares(residual, start[use], bounds=(lower[use], upper[use]), x_scale="jac")
-        full = np.zeros(4)
-        full[use] = out.x
-        return float(np.sum(out.fun**2)), float(full[2])
-
-    s_lag, tau = fitted_sum(True)
-    return s_lag, tau, fitted_sum(False)[0]
-
-
 def _lag_opens_the_loop(fitted, clock):
     """(LR of the lag on the straight loop, the lag) when a lag explains the loop's opening within the slip test's
     critical value of the slip fit, and by more than ``LM_CRITICAL`` over the straight loop; else None.
@@ -361,12 +260,24 @@ def _slip_beyond_the_lag(final, record, clock, kinds, sizes):
     others = [(k, size) for k, size in zip(kinds, sizes, strict=True) if k != LAG]
     torque, twist = corrected_record(record.torque, record.twist, clock, [k for k, _ in others],
                                      [size for _, size in others], record.reversals)
-    line = lag_line(_Channels(torque, twist, record), clock, drift=DRIFT in kinds)
+    # both sums leave out the ends, where a shift by the lag reaches past the record (its end cubic) or takes the
+    # record's first samples, held before the lagging channel moved, into the smooth part's window: twice the slip
+    # fit's lag and half a window at each end (a stuck record lagging 30 ms at 200 Hz read the straight loop's lag
+    # as 29 ms and its sum 38 residual variances above the slip fit's, with the ends in)
+    n = torque.size
+    step = float(np.median(np.diff(clock))) if n > 1 else 1.0
+    margin = int(math.ceil(2.0 * abs(float(sizes[kinds.index(LAG)])) / step)) + rate_window(n, record.reversals) // 2
+    inner = np.zeros(n, dtype=bool)
+    inner[margin:n - margin] = True
+    if inner.sum() < n // 2:
+        inner[:] = True
+    line = lag_line(_Channels(torque, twist, record), clock, drift=DRIFT in kinds, inner=inner)
     if line is None:
         return math.inf, 0.0
-    r, jac = data_derivatives(final)[:2]
+    r, jac, _, _, rows = data_derivatives(final)
     scale2 = float(r @ r) / max(r.size - jac.shape[1], 1)
-    return max(line[0] - float(r @ r), 0.0) / scale2, line[1]
+    s_final = float(np.sum(r[inner[rows]] ** 2))
+    return max(line[0] - s_final, 0.0) / scale2, line[1]
 
 
 def _virgin_statistic(virgin, steady, start: int) -> float:
@@ -466,9 +377,9 @@ def corrected_fit(fitted, clock, record, settings, fit_prepared, timed: bool):
                         f"by {lr:.1f} residual variances, below the slip test's {critical:.1f}: the loop's "
                         "opening is the lag; slip is not established and no friction value or modulus is given")
             if final.p is not None:
-                withheld = Estimate(None, None, (None, None), identified=False)
+                withheld = Estimate.withheld_by("lag")
                 final = replace(final, result=replace(final.result, friction=withheld, shear_modulus=withheld,
-                                                      noise_limited=True))
+                                                      compliance=withheld, correlation=None, noise_limited=True))
     result = final.result
     notes = list(result.warnings)
     if steady:

@@ -53,10 +53,9 @@ def with_known_modulus(fitted, shear_modulus: float, gauge_length: float | None,
     modulus = Estimate(shear_modulus, None, (shear_modulus, shear_modulus))
     notes = list(result.warnings)
     compliance = result.compliance
-    # a check that withheld the friction (no value and no bound: a lag that explains the loop as well as slip, a
-    # contact model the loop rejects) is not overridden by knowing G
-    withheld = result.friction.value is None and result.friction.interval == (None, None)
-    if fitted.p is not None and not withheld:
+    # a check that withheld the friction (a lag that explains the loop as well as slip, a contact model the loop
+    # rejects: ``Estimate.withheld``) is not overridden by knowing G
+    if fitted.p is not None and result.friction.withheld is None:
         y = 2.0 * contact.elastic_bodies / (math.pi * radius**3 * shear_modulus)
         p = np.array(fitted.p, dtype=float)
         kappa_min, kappa_max = kappa_bounds

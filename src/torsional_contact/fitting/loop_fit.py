@@ -126,7 +126,7 @@ from . import profile as profiles
 from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
 from .parameters import COMPLIANCE, CORE, KAPPA, LINE_COMPLIANCE, LINE_OFFSET, LOOP, OFFSET, SLIP_TORQUE, TURNING
-from .per_cycle import cycles_with_progress
+from .per_cycle import cycles_with_progress, withheld_cycles
 from .record_checks import checked_time, many_reversals_note, prepared_record
 from .results import Estimate, LoopFit
 from .samples import checked_loop
@@ -204,8 +204,8 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
         Also fit every whole cycle on its own (``fitting.per_cycle``): ``cycles`` in the result, with a progress
         bar on standard error for ten cycles or more (when it is a terminal).
     check_defects : bool
-        Test the record for the defects rigs have (``fitting.defects``: torque zero offset, twist drift, lag between
-        the channels) and refit with those found; False: the fit as it comes (for studies of the handling).
+        Test the record for the defects rigs have (``fitting.defects``: offset, drift, lag), refit with those found,
+        and check the contact model (``fitting.model_check``); False: the fit as it comes (for studies).
 
     Returns
     -------
@@ -249,7 +249,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                            list(whole.warnings), whole.spikes, settings)
     if check_defects:
         fitted = defects.corrected_fit(fitted, clock, whole, settings, _fit_prepared, time is not None)
-        fitted = model_check.checked_model(fitted, settings, _fit_prepared)  # the contact model the loop prefers
+        fitted = model_check.checked_model(fitted, settings, _fit_prepared, record, smooth)  # the loop's model
     fitted = widened_for_smoothing(fitted, smooth)
     result = fitted.result
     if modulus is not None:
@@ -257,8 +257,8 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                                             * record.torque_noise)
         result = with_known_modulus(fitted, modulus, length, a, force, confidence, (KAPPA_MIN, KAPPA_MAX), reach)
     if per_cycle:
-        clock = clock if time is not None else None
-        result = replace(result, cycles=tuple(cycles_with_progress(record, settings, _fit_prepared, clock)))
+        cycles = cycles_with_progress(record, settings, _fit_prepared, clock if time is not None else None)
+        result = replace(result, cycles=withheld_cycles(cycles, result.friction.withheld))
     note = many_reversals_note(record.reversals.size, result, smooth is not None)
     return result if note is None else replace(result, warnings=(*result.warnings, note))
 

@@ -8,9 +8,12 @@ with the cylinders' model gave f 14 % low, its intervals excluding the truth in 
 with only a lag warning (the misfit read as a lag of about 13 ms).  Every model of the table (``models``) fits
 the same parameters (T_s, kappa, C, theta_0 and the turning points' twists; ``fitting.parameters``) in the one
 normalisation T* = 2 T / (f F a), so the residual sums of their fits to the same samples compare directly: a
-comparison of non-nested models with equal numbers of parameters, in which the smaller sum is the better
-model (Akaike's criterion, Vuong's test).  When another model's sum lies below the chosen model's by more than
-``MODEL_CRITICAL`` residual variances (the variance of the better fit), the data reject the chosen model: the
+comparison of non-nested models with equal numbers of parameters, in which the smaller sum is the better model.
+Under the chosen model, another curve at a distance d (noise units) from the truth lowers the sum by
+-d^2 - 2 d.e (e the noise), which exceeds c with probability Phi(-(c + d^2) / (2 d)), at most Phi(-sqrt(c))
+whatever d: 5e-5 per model at c = ``MODEL_CRITICAL``.  When another model's sum lies below the chosen model's
+by more than ``MODEL_CRITICAL`` residual variances (the variance of the better fit), the data reject the chosen
+model: the
 result then gives no friction value, modulus or compliance (each depends on the contact model: the sphere's
 records read as cylinders gave C 45-50 % high as well), and its warning names the model the loop prefers and
 the friction fitted with it.
@@ -24,8 +27,10 @@ uniform pressure.
 The check fits the record's first ``CHECK_TURNING`` turning points (two cycles from the virgin state; all of a
 shorter record) under each model, the chosen one included, with the fit's quick path (point estimate and slip
 verdict): a few quick fits of a few thousand samples at most.  Loops in stick (a straight loop under every
-model) are not checked.  The record is the one the final fit used (corrected for the defects found, the torque
-smoothed where it was).
+model) are not checked, nor a record whose stretch the chosen model reads as stick (its straight loop's sum is
+then no minimum of the full model, and the gain would partly be the slip test's).  The record is the one the
+final fit used (corrected for the defects found), with the raw torque where the fit smoothed it: the smoothed
+channel's errors are correlated, and on it the gain scattered twice as widely as the chi-square bound allows.
 """
 
 from __future__ import annotations
@@ -50,14 +55,13 @@ MODEL_CRITICAL = float(special.chdtri(1, MODEL_LEVEL))
 CHECK_TURNING = 4
 
 
-def _stretch(model):
+def _stretch(torque, twist, reversals):
     """(torque, twist, reversals) of the record's first ``CHECK_TURNING`` turning points (the whole record when it has
     no more; else the samples up to the next turning point, whose branch ends the stretch)."""
-    reversals = model.reversals
     if reversals.size <= CHECK_TURNING:
-        return model.torque, model.twist, reversals
+        return torque, twist, reversals
     end = int(reversals[CHECK_TURNING]) + 1
-    return model.torque[:end], model.twist[:end], reversals[:CHECK_TURNING]
+    return torque[:end], twist[:end], reversals[:CHECK_TURNING]
 
 
 def _residual_sum(fitted) -> float:
@@ -68,34 +72,43 @@ def _residual_sum(fitted) -> float:
     return float(r @ r)
 
 
-def residual_sums(fitted, settings, fit_prepared) -> dict:
+def residual_sums(fitted, settings, fit_prepared, record=None, smooth=None) -> dict:
     """{model name: (residual sum, slip torque or None)} of every model of the table on the stretch of the record
     that ``fitted`` (a ``loop_fit.Fitted``) holds, fitted by ``fit_prepared`` with ``settings`` (``loop_fit``) but
-    the contact model; and the degrees of freedom under the key None."""
+    the contact model; and the degrees of freedom under the key None.  ``record`` and ``smooth``: the prepared
+    record and its ``smoothing.SmoothTorque`` when the fit smoothed the torque (the raw samples are then used)."""
     model = fitted.model
-    torque, twist, reversals = _stretch(model)
+    torque, torque_noise = model.torque, model.torque_noise
+    if smooth is not None:  # the fitted torque (its corrections included) with the spline's residual put back
+        residual = np.asarray(record.torque, dtype=float) - smooth.torque
+        torque, torque_noise = torque + residual[residual.size - torque.size:], smooth.raw_noise
+    torque, twist, reversals = _stretch(torque, model.twist, model.reversals)
     out = {None: max(torque.size - 4, 1)}
     for name in models.names():
         other = settings[:-1] + (models.get(name),)
-        quick = fit_prepared(torque, twist, reversals, model.torque_noise, model.twist_noise, [], 0, other,
-                             quick=True)
+        quick = fit_prepared(torque, twist, reversals, torque_noise, model.twist_noise, [], 0, other, quick=True)
         out[name] = (_residual_sum(quick), None if quick.p is None else float(quick.p[SLIP_TORQUE]))
     return out
 
 
-def checked_model(fitted, settings, fit_prepared):
+def checked_model(fitted, settings, fit_prepared, record=None, smooth=None):
     """``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) unchanged when no other model of the table fits its record
     better by more than ``MODEL_CRITICAL`` residual variances; else with no friction value, modulus or compliance
-    and a ``model`` warning (module docstring)."""
+    (``Estimate.withheld`` "model") and a ``model`` warning (module docstring; ``record`` and ``smooth`` as
+    ``residual_sums`` takes them)."""
     if fitted.p is None:
         return fitted
     chosen = settings[-1].name
-    sums = residual_sums(fitted, settings, fit_prepared)
+    sums = residual_sums(fitted, settings, fit_prepared, record, smooth)
     dof = sums.pop(None)
+    if sums[chosen][1] is None:  # the chosen model reads the stretch as stick: no minimum of its own to compare
+        return fitted
     best = min(sums, key=lambda name: sums[name][0])
     scale2 = sums[best][0] / dof
+    if best == chosen or not scale2 > 0:
+        return fitted
     gain = (sums[chosen][0] - sums[best][0]) / scale2
-    if best == chosen or not gain > MODEL_CRITICAL:
+    if not gain > MODEL_CRITICAL:
         return fitted
     a, force = settings[0], settings[1]
     slip_torque = sums[best][1]
@@ -104,9 +117,9 @@ def checked_model(fitted, settings, fit_prepared):
             f"(above {MODEL_CRITICAL:.1f}, on its first {min(model_turning(fitted), CHECK_TURNING)} turning points)"
             f"{there}; f, G and the compliance depend on the contact model, so none is given: fit with "
             f"model={best!r} if that is the contact of the test")
-    withheld = Estimate(None, None, (None, None), identified=False)
-    result = replace(fitted.result, friction=withheld, shear_modulus=withheld, compliance=withheld,
-                     noise_limited=True, warnings=(*fitted.result.warnings, note))
+    withheld = Estimate.withheld_by("model")
+    result = replace(fitted.result, friction=withheld, shear_modulus=withheld, compliance=withheld, correlation=None,
+                     warnings=(*fitted.result.warnings, note))
     return replace(fitted, result=result)
 
 

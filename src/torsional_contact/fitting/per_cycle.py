@@ -26,7 +26,7 @@ import numpy as np
 
 from .samples import MIN_SAMPLES
 
-__all__ = ["cycle_fits", "cycle_bounds", "cycles_with_progress"]
+__all__ = ["cycle_fits", "cycle_bounds", "cycles_with_progress", "withheld_cycles"]
 
 
 def cycle_bounds(reversals: np.ndarray, size: int) -> list[tuple[int, int]]:
@@ -77,3 +77,16 @@ def cycles_with_progress(record, settings, fit_prepared, clock):
 
     with tqdm(total=total, desc="fit per cycle", unit="cycle", disable=None, leave=False) as bar:
         return cycle_fits(record, settings, fit_prepared, clock, progress=lambda done, _: bar.update(1))
+
+
+def withheld_cycles(cycles, check: str | None) -> tuple:
+    """``cycles`` as a tuple; when the whole record's check ``check`` withheld its friction (``Estimate.withheld``:
+    a lag that explains the loop as well as slip, a contact model the loop rejects), every cycle's friction and
+    compliance are withheld too (each cycle is fitted under the same model and lag) and say so."""
+    if check is None:
+        return tuple(cycles)
+    withheld = {"value": None, "stderr": None, "interval": [None, None], "identified": False, "withheld": check}
+    note = (f"withheld: the whole record's {check} check withheld f, G and the compliance; this cycle's values "
+            "would be read under what it rejected")
+    return tuple({**entry, "friction": dict(withheld), "compliance": dict(withheld),
+                  "warnings": [*entry["warnings"], note]} for entry in cycles)

@@ -21,7 +21,9 @@ class Estimate:
     set by the model's bound kappa <= ``loop_fit.KAPPA_MAX`` rather than by the data.  ``bootstrap_interval``:
     the bias-corrected percentile interval of a parametric bootstrap, when asked for, and ``bootstrap_bias`` its
     bias correction z_0 = Phi^-1(fraction of the refits below the estimate): the estimator's median bias in
-    standard errors, with the opposite sign (``fitting.bootstrap``).
+    standard errors, with the opposite sign (``fitting.bootstrap``).  ``withheld`` names the check that withheld
+    the quantity ("lag": a lag explains the loop as well as slip; "model": another contact model fits the loop
+    better); ``value`` and ``interval`` are then None, and a known G does not bring it back.
     """
 
     value: float | None
@@ -32,6 +34,12 @@ class Estimate:
     bootstrap_interval: tuple[float | None, float | None] | None = None
     assumed_end: str | None = None
     bootstrap_bias: float | None = None
+    withheld: str | None = None
+
+    @classmethod
+    def withheld_by(cls, check: str) -> Estimate:
+        """No value and no interval: the check ``check`` withheld the quantity."""
+        return cls(None, None, (None, None), identified=False, withheld=check)
 
     def as_dict(self) -> dict:
         out = {"value": _json(self.value), "stderr": _json(self.stderr),
@@ -44,6 +52,8 @@ class Estimate:
             out["bootstrap_interval"] = [_json(self.bootstrap_interval[0]), _json(self.bootstrap_interval[1])]
         if self.bootstrap_bias is not None:
             out["bootstrap_bias"] = _json(self.bootstrap_bias)
+        if self.withheld is not None:
+            out["withheld"] = self.withheld
         return out
 
 

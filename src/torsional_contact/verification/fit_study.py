@@ -309,9 +309,10 @@ def per_cycle_study(scenario: Scenario, *, replicates: int, seed: int, specimen:
     a running-in record (its truth has ``friction_per_cycle``): each cycle's friction against the cycle's true
     friction, the mean of its two branches'.  Returns, apart, the interval coverage and the bound coverage over all
     cycles of all records (k of n with Clopper-Pearson intervals), the median relative bias of the values with its
-    standard error, the cycles fitted, ``within``: the largest relative change of the true friction across one
-    cycle (one f is fitted per cycle while it changes by that much), and ``range_coverage``: how often the interval
-    meets the cycle's range of friction (its two branches', the mean +- a quarter of the change per cycle)."""
+    standard error, the cycles fitted, ``within``: the largest relative spread of the true friction between a
+    cycle's two branches (one f is fitted per cycle while the branches differ by that much), and
+    ``range_coverage``: how often the interval meets the cycle's range of friction (its two branches', the mean
+    +- a quarter of the change from one cycle to the next)."""
     if fit is None:
         from .. import fit_loop as fit
     if isinstance(replicates, bool) or int(replicates) != replicates or replicates < 1:
