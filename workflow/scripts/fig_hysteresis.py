@@ -41,7 +41,7 @@ def main():
     d = data["dissipation_law"]
     law.loglog(d["eps"], d["dissipation"], "o", ms=4.5, label="memory rules")
     law.loglog(d["eps"], d["asymptote"], "-", label=r"$(\pi^4/3)\,\epsilon^3$")
-    law.set_xlabel(r"$\epsilon = \Delta T^*/2 - 1$")
+    law.set_xlabel(r"$\epsilon = A/2 - 1$")
     law.set_ylabel(r"energy per cycle $W\mu/((fp_0)^2a^3)$")
     law.legend(loc="upper left", **COMPACT)  # the data rise from lower left to upper right: upper left is free
     c = data["compliance"]
