@@ -130,14 +130,20 @@ def test_end_to_end_builds_every_deliverable(built):
 
 def test_the_fit_study_writes_its_data_table_macros_and_figure(built):
     """The rig-defect study of the test configuration: every output, the CSV's metadata, both handling modes run
-    (the fit has the switches), an inverted channel refused, the 10^5-sample scenario left out (0 replicates)."""
+    (the fit has the switches), an inverted channel refused, a misspecified contact named by the model check with the
+    handling on, the running-in record fitted per cycle, the 10^5-sample scenario left out (0 replicates)."""
     import json
 
     data = json.loads((built / "data" / "fit_study.json").read_text())
     rows = {(r["scenario"], r["mode"]): r for r in data["scenarios"]}
-    assert set(rows) == {("offset", "on"), ("offset", "off"), ("inverted", "on"), ("inverted", "off")}
+    names = ("offset", "inverted", "running-in", "model-hertz", "model-flat-punch")
+    assert set(rows) == {(name, mode) for name in names for mode in ("on", "off")}
     assert all(r["summary"]["records"] == data["metadata"]["replicates"] for r in rows.values())
     assert rows["inverted", "on"]["summary"]["refused"]["count"] == data["metadata"]["replicates"]
+    assert rows["model-hertz", "on"]["summary"]["named"]["count"] == data["metadata"]["replicates"]
+    per_cycle = data["per_cycle"]
+    assert per_cycle["scenario"] == "running-in" and per_cycle["cycles"] == 3 * data["metadata"]["replicates"]
+    assert "res@fs-pc-range-cov" in (built / "macros" / "fit_study.tex").read_text()
     assert data["metadata"]["packages"]["numpy"] and len(data["window"]) == 2
     text = (built / "data" / "fit_study.csv").read_text()
     assert text.startswith("# method: ") and "# packages: " in text
