@@ -51,7 +51,8 @@ def main():
                 first = False
             else:
                 refused = row["summary"]["refused"]["count"]
-                cov.text(25 if mode == "on" else 75, j, "refused: an error" if refused else "no interval",
+                # on its own mode's row (the other mode's bar may cross the row's middle)
+                cov.text(25 if mode == "on" else 75, y, "refused: an error" if refused else "no interval",
                          fontsize=7, color=COLOURS[mode], va="center", ha="center")
             warned = row["summary"]["warned"]
             if warned["count"]:
@@ -62,7 +63,8 @@ def main():
     cov.set_xlim(-5, 108)
     cov.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.13), ncol=2, frameon=False)
     cov.set_xlabel("f interval or bound covers the truth [%]")
-    cov.set_title(f"{data['metadata']['replicates']} record(s) per row;\ntriangles: the fit warned", fontsize=7)
+    count = data["metadata"]["replicates"]
+    cov.set_title(f"{count} {'record' if count == 1 else 'records'} per row;\ntriangles: the fit warned", fontsize=7)
     tmax = np.array([w["max_torque_ratio"] for w in window])
     amplitude = 1e3 * np.array([w["twist_amplitude"] for w in window])
 
@@ -72,8 +74,8 @@ def main():
     order = np.argsort(amplitude, kind="stable")
     win.plot(amplitude[order], [bias(window[i]["fit"]["friction"]) for i in order], "o-", markersize=3,
              label="loop fit", color="C0")
-    win.plot(amplitude[order], [bias(window[i]["plateau"]) for i in order], "s--", markersize=3,
-             label="plateau estimator", color="C2")
+    win.plot(amplitude[order], [bias(window[i]["plateau"]) for i in order], "s--", markersize=4,
+             markerfacecolor="none", label="plateau estimator", color="C2")  # open: the loop fit's dots show
     win.plot(amplitude[order], 100 * (tmax[order] / (4 / 3) - 1), "x", color="0.4", markersize=4,
              label="peak torque\nas plateau")
     low, high = win.get_ylim()
@@ -87,12 +89,10 @@ def main():
     win.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
     win.xaxis.set_minor_formatter(ticker.NullFormatter())
     win.tick_params(axis="x", labelsize=7)
-    win.text(0.98, 0.5, "vertical numbers: max T*\nof the record", transform=win.transAxes, fontsize=7,
-             ha="right", color="0.3")
     win.axhline(0, color="0.6", linewidth=0.6)
     win.set_xlabel("twist amplitude [mrad]")  # no sub- or superscripts: every glyph at 7 pt or more
     win.set_ylabel(r"median bias of $f$ [%]")
-    win.set_title("gross-slip window\n(twist control)", fontsize=7)
+    win.set_title("gross-slip window (twist control);\nnumbers at the top: max T*", fontsize=7)
     win.legend(fontsize=7)
     fig.tight_layout()
     save_figure(fig, a.pdf, a.png)

@@ -98,8 +98,9 @@ def scenario_table(rows, replicates: int) -> str:
         if s["refused"]["count"]:
             lines.append(rf" & & & \multicolumn{{5}}{{l}}{{refused with an error: {_kn(s['refused'])}}} \\")
         lines.append(r"\hline")
+    word = "record" if replicates == 1 else "records"
     lines += [r"\end{longtable}",
-              rf"\par\footnotesize {replicates} record(s) per row: rates as $k/n$ with exact 95\,\% "
+              rf"\par\footnotesize {replicates} {word} per row: rates as $k/n$ with exact 95\,\% "
               r"(Clopper--Pearson) intervals in per cent."]
     return "\n".join(lines) + "\n"
 
@@ -156,6 +157,7 @@ def csv_text(rows, window, meta) -> str:
 
 def macros(rows, window, config, replicates, long_replicates) -> dict:
     out = {"fs-replicates": str(replicates), "fs-long-replicates": str(long_replicates),
+           "fs-records-word": "record" if replicates == 1 else "records",
            "fs-friction": f"{config['specimen']['friction']:g}",
            "fs-modulus-gpa": f"{config['specimen']['shear_modulus'] / 1e9:g}",
            "fs-radius-mm": f"{config['specimen']['radius'] * 1e3:g}",
@@ -208,8 +210,11 @@ def macros(rows, window, config, replicates, long_replicates) -> dict:
         out[f"fs-window-{j}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)
         out[f"fs-window-{j}-fit-bias"] = _pct(row["fit"]["friction"]["median_bias"], 1)
     out["fs-window-count"] = str(len(window))
+    gross = RigSpecimen(**config["specimen"]).contact.gross_slip_torque
     for tag, row in (("first", window[0]), ("last", window[-1])):
         out[f"fs-window-{tag}-tmax"] = f"{row['max_torque_ratio']:.4g}"
+        # the plateau estimator's least bias below gross slip, 1 - max T* / T*_gs (it reads at most the peak)
+        out[f"fs-window-{tag}-bound"] = _pct(max(1.0 - row["max_torque_ratio"] / gross, 0.0), 1)
         out[f"fs-window-{tag}-plateau-bias"] = _pct(row["plateau"]["median_bias"], 1)
         out[f"fs-window-{tag}-fit-bias"] = _pct(row["fit"]["friction"]["median_bias"], 1)
         out[f"fs-window-{tag}-twist-mrad"] = f"{1e3 * row['twist_amplitude']:.3g}"
@@ -222,6 +227,7 @@ def per_cycle_macros(study) -> dict:
         return {}
     strict, in_range = study["interval_coverage"], study["range_coverage"]
     out = {"fs-pc-records": str(study["records"]), "fs-pc-cycles": str(study["cycles"]),
+           "fs-pc-records-word": "record" if study["records"] == 1 else "records",
            "fs-pc-cov": f"{strict['count']}/{strict['trials']}",
            "fs-pc-range-cov": f"{in_range['count']}/{in_range['trials']}",
            "fs-pc-bias": _pct(study["median_bias"], 2), "fs-pc-within": _pct(study["within"], 1)}

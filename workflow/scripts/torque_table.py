@@ -148,7 +148,7 @@ def main():
         values["shear-bound-max"] = f"{worst[1]:.3f}"  # the ratio to three digits; the deficit below it
         values["shear-bound-deficit"] = sci(1.0 - worst[1], 0) if worst[1] < 1.0 else "0"
         values["shear-bound-exceeds"] = "yes" if worst[1] > 1.0 else "no"
-        values["shear-bound-r"] = f"{worst[2]:g}"
+        values["shear-bound-r"] = "a" if worst[2] == 1 else f"{worst[2]:g}\\,a"  # a radius in units of a
         values["shear-bound-z"] = f"{worst[3]:g}"
         values["shear-bound-radii"] = f"{len(bounds)}"
         values["table-resolved-min"] = f"{lo:.3f}"
