@@ -121,7 +121,7 @@ from scipy import special  # quantiles from special: scipy.stats costs 0.5 s mor
 
 from .. import models, units
 from ..diagnostics import AccuracyWarning, NoiseLimitedFitWarning
-from . import defects, model_check
+from . import defects, model_check, parameters
 from . import profile as profiles
 from .known_modulus import shaft_compliance, with_known_modulus
 from .loop_model import LoopModel
@@ -149,15 +149,8 @@ from .starts import (  # noqa: F401 - the starting points' names, as the tests a
 
 __all__ = ["Estimate", "LoopFit", "fit_loop", "KAPPA_MAX", "Fitted"]
 
-#: Largest kappa = k / (C T_s): C holds at least the shaft over the gauge length L, L / (G J), so kappa <= 2 a / L,
-#: and the twist formula needs sections about 2 a or more from the interface (L >= 4 a, kappa <= 0.5); 2 leaves room.
-KAPPA_MAX = 2.0
-#: Smallest kappa: the contact's twist rounds the knee of a gross-slip loop over a width that grows like kappa
-#: log(1/kappa), so that the residuals have an infinite derivative at kappa = 0, where a fit would stop as at a
-#: minimum.  At 1e-4 (G about 3e5 times its value for kappa = 0.3) the modulus is infinite for any purpose.
-KAPPA_MIN = 1e-4
-#: How far (in noise levels of the twist) the twist at a reversal may lie from the extreme sample.
-REVERSAL_REACH = 6.0
+#: The bounds on kappa and on the turning points' twists (``fitting.parameters``), also this module's names.
+KAPPA_MAX, KAPPA_MIN, REVERSAL_REACH = parameters.KAPPA_MAX, parameters.KAPPA_MIN, parameters.REVERSAL_REACH
 #: Restarts from a better minimum found by a profile.
 RESTARTS = 3
 
@@ -249,7 +242,7 @@ def fit_loop(torque, twist, *, radius, normal_force, torque_noise=None, twist_no
                            list(whole.warnings), whole.spikes, settings)
     if check_defects:
         fitted = defects.corrected_fit(fitted, clock, whole, settings, _fit_prepared, time is not None)
-        fitted = model_check.checked_model(fitted, settings, _fit_prepared, record, smooth)  # the loop's model
+        fitted = model_check.checked_model(fitted, settings, record, smooth)  # the contact model the loop prefers
     fitted = widened_for_smoothing(fitted, smooth)
     result = fitted.result
     if modulus is not None:

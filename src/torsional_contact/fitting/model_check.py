@@ -25,23 +25,36 @@ own model, 358-407 with the flat punch's (the two are not told apart there) and 
 uniform pressure.
 
 The check fits the record's first ``CHECK_TURNING`` turning points (two cycles from the virgin state; all of a
-shorter record) under each model, the chosen one included, with the fit's quick path (point estimate and slip
-verdict): a few quick fits of a few thousand samples at most.  Loops in stick (a straight loop under every
-model) are not checked, nor a record whose stretch the chosen model reads as stick (its straight loop's sum is
-then no minimum of the full model, and the gain would partly be the slip test's).  The record is the one the
-final fit used (corrected for the defects found), with the raw torque where the fit smoothed it: the smoothed
-channel's errors are correlated, and on it the gain scattered twice as widely as the chi-square bound allows.
+shorter record) under each model, the chosen one included, by one least-squares fit each from the fit's own
+parameters (``residual_sums``): each model's sum is then the minimum nearest the chosen model's loop, an upper
+bound of its best, so that the check errs towards keeping the chosen model.  Loops in stick (a straight loop
+under every model) are not checked.  The record is the one the final fit used (corrected for the defects
+found), with the raw torque where the fit smoothed it: the smoothed channel's errors are correlated, and on it
+the gain scattered twice as widely as the chi-square bound allows.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
 from scipy import special
 
 from .. import models
-from .parameters import SLIP_TORQUE
+from . import profile
+from .loop_model import LoopModel
+from .parameters import (
+    COMPLIANCE,
+    CORE,
+    FIRST_TURNING,
+    KAPPA,
+    KAPPA_MAX,
+    KAPPA_MIN,
+    REVERSAL_REACH,
+    SLIP_TORQUE,
+    TURNING,
+)
 from .results import Estimate
 
 __all__ = ["MODEL_LEVEL", "MODEL_CRITICAL", "CHECK_TURNING", "residual_sums", "checked_model"]
@@ -64,19 +77,28 @@ def _stretch(torque, twist, reversals):
     return torque[:end], twist[:end], reversals[:CHECK_TURNING]
 
 
-def _residual_sum(fitted) -> float:
-    """The residual sum of a quick fit: its slip fit's where slip was found, else the straight loop's."""
-    if fitted.p is None:
-        return float(np.sum(np.asarray(fitted.line.fun) ** 2))
-    r = fitted.model.distances(fitted.p)
-    return float(r @ r)
+def _lean_fit(torque, twist, reversals, torque_noise, twist_noise, contact, start):
+    """(residual sum, slip torque) of the loop of ``contact`` fitted from ``start`` alone, within the fit's bounds
+    (``parameters``: kappa, the turning points' reach; T_s and C positive), by ``profile.fit``."""
+    model = LoopModel(torque, twist, reversals, torque_noise, twist_noise, contact)
+    lower, upper = np.full(start.size, -np.inf), np.full(start.size, np.inf)
+    peak = float(np.max(np.abs(torque)))
+    lower[CORE] = [1e-9 * peak, KAPPA_MIN, 1e-6 * start[COMPLIANCE]]
+    upper[KAPPA] = KAPPA_MAX
+    reach = REVERSAL_REACH * math.hypot(twist_noise, start[COMPLIANCE] * torque_noise)
+    lower[TURNING], upper[TURNING] = twist[reversals] - reach, twist[reversals] + reach
+    start = np.clip(start, lower, upper)
+    p, s, _ = profile.fit(model, start, lower, upper)
+    return float(s), float(p[SLIP_TORQUE])
 
 
-def residual_sums(fitted, settings, fit_prepared, record=None, smooth=None) -> dict:
-    """{model name: (residual sum, slip torque or None)} of every model of the table on the stretch of the record
-    that ``fitted`` (a ``loop_fit.Fitted``) holds, fitted by ``fit_prepared`` with ``settings`` (``loop_fit``) but
-    the contact model; and the degrees of freedom under the key None.  ``record`` and ``smooth``: the prepared
-    record and its ``smoothing.SmoothTorque`` when the fit smoothed the torque (the raw samples are then used)."""
+def residual_sums(fitted, record=None, smooth=None) -> dict:
+    """{model name: (residual sum, slip torque)} of every model of the table on the stretch of the record that
+    ``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) holds, each fitted from the fit's own parameters (its slip
+    torque moved so that the gross-slip plateau stays where it was: the models share every parameter; a grid of
+    starts per model doubled the cost of a short record's fit), and the degrees of freedom under the key None.
+    ``record`` and ``smooth``: the prepared record and its ``smoothing.SmoothTorque`` when the fit smoothed the
+    torque (the raw samples are then used)."""
     model = fitted.model
     torque, torque_noise = model.torque, model.torque_noise
     if smooth is not None:  # the fitted torque (its corrections included) with the spline's residual put back
@@ -84,25 +106,31 @@ def residual_sums(fitted, settings, fit_prepared, record=None, smooth=None) -> d
         torque, torque_noise = torque + residual[residual.size - torque.size:], smooth.raw_noise
     torque, twist, reversals = _stretch(torque, model.twist, model.reversals)
     out = {None: max(torque.size - 4, 1)}
+    chosen = model.contact
+    base = np.array(fitted.p, dtype=float)[:FIRST_TURNING + reversals.size]
+    whole = reversals.size == model.reversals.size and smooth is None  # the stretch is the fitted record itself
     for name in models.names():
-        other = settings[:-1] + (models.get(name),)
-        quick = fit_prepared(torque, twist, reversals, torque_noise, model.twist_noise, [], 0, other, quick=True)
-        out[name] = (_residual_sum(quick), None if quick.p is None else float(quick.p[SLIP_TORQUE]))
+        contact = models.get(name)
+        if contact is chosen and whole:  # the fit's own minimum, on the same samples
+            r = model.distances(fitted.p)
+            out[name] = (float(r @ r), float(fitted.p[SLIP_TORQUE]))
+            continue
+        start = base.copy()
+        start[SLIP_TORQUE] *= chosen.gross_slip_torque / contact.gross_slip_torque
+        out[name] = _lean_fit(torque, twist, reversals, torque_noise, model.twist_noise, contact, start)
     return out
 
 
-def checked_model(fitted, settings, fit_prepared, record=None, smooth=None):
+def checked_model(fitted, settings, record=None, smooth=None):
     """``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) unchanged when no other model of the table fits its record
     better by more than ``MODEL_CRITICAL`` residual variances; else with no friction value, modulus or compliance
     (``Estimate.withheld`` "model") and a ``model`` warning (module docstring; ``record`` and ``smooth`` as
     ``residual_sums`` takes them)."""
     if fitted.p is None:
         return fitted
-    chosen = settings[-1].name
-    sums = residual_sums(fitted, settings, fit_prepared, record, smooth)
+    chosen = fitted.model.contact.name
+    sums = residual_sums(fitted, record, smooth)
     dof = sums.pop(None)
-    if sums[chosen][1] is None:  # the chosen model reads the stretch as stick: no minimum of its own to compare
-        return fitted
     best = min(sums, key=lambda name: sums[name][0])
     scale2 = sums[best][0] / dof
     if best == chosen or not scale2 > 0:
@@ -111,8 +139,7 @@ def checked_model(fitted, settings, fit_prepared, record=None, smooth=None):
     if not gain > MODEL_CRITICAL:
         return fitted
     a, force = settings[0], settings[1]
-    slip_torque = sums[best][1]
-    there = "" if slip_torque is None else f" (f {2.0 * slip_torque / (force * a):.3g} with it)"
+    there = f" (f {2.0 * sums[best][1] / (force * a):.3g} with it)"
     note = (f"model: the loop fits the {best!r} model better than {chosen!r} by {gain:.1f} residual variances "
             f"(above {MODEL_CRITICAL:.1f}, on its first {min(model_turning(fitted), CHECK_TURNING)} turning points)"
             f"{there}; f, G and the compliance depend on the contact model, so none is given: fit with "

@@ -25,7 +25,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["SLIP_TORQUE", "KAPPA", "COMPLIANCE", "OFFSET", "FIRST_TURNING", "CORE", "LOOP", "TURNING",
-           "PARAMETER_NAMES", "UNITS", "LINE_COMPLIANCE", "LINE_OFFSET", "turning_twists", "vector"]
+           "PARAMETER_NAMES", "UNITS", "LINE_COMPLIANCE", "LINE_OFFSET", "KAPPA_MAX", "KAPPA_MIN", "REVERSAL_REACH",
+           "turning_twists", "vector"]
 
 #: Index of the slip-onset torque T_s (N m).
 SLIP_TORQUE = 0
@@ -47,6 +48,16 @@ TURNING = slice(FIRST_TURNING, None)
 PARAMETER_NAMES = ("slip_torque", "kappa", "compliance", "twist_offset")
 #: Their units, in the same order (the turning points' twists are in rad).
 UNITS = ("N m", "1", "rad / (N m)", "rad")
+
+#: Largest kappa = k / (C T_s): C holds at least the shaft over the gauge length L, L / (G J), so kappa <= 2 a / L,
+#: and the twist formula needs sections about 2 a or more from the interface (L >= 4 a, kappa <= 0.5); 2 leaves room.
+KAPPA_MAX = 2.0
+#: Smallest kappa: the contact's twist rounds the knee of a gross-slip loop over a width that grows like kappa
+#: log(1/kappa), so that the residuals have an infinite derivative at kappa = 0, where a fit would stop as at a
+#: minimum.  At 1e-4 (G about 3e5 times its value for kappa = 0.3) the modulus is infinite for any purpose.
+KAPPA_MIN = 1e-4
+#: How far (in noise levels of the twist) the twist at a reversal may lie from the extreme sample.
+REVERSAL_REACH = 6.0
 
 #: Index of the straight loop's compliance C (rad / (N m)) in its parameters (C, theta_0).
 LINE_COMPLIANCE = 0
