@@ -103,13 +103,14 @@ class _Shift:
         return self.twist + moved - self.smooth
 
 
-def lag_line(model, clock: np.ndarray, drift: bool = False, inner=None):
+def lag_line(model, clock: np.ndarray, drift: bool = False, inner=None, exact: bool = True):
     """The straight loop with a lag: (S, lag, S of the straight loop without it), the residuals
     (T_i - (theta(t_i + tau) - theta_0) / C) / w with the twist shifted as the record's correction shifts it
     (``shifted_twist``), so that the straight loop and the slip fit with a lag see the same data; with ``drift``
     both fits also take out a twist drift r (t_i - t_mid).  The lag is found to first order (theta_i + tau
     theta'_i, a linear least-squares start), then refined on the exact shift (bounded scalar minimisation over a
-    bracket of twice that lag or four samples).  ``inner``: a mask of the samples the sums run over (default all).
+    bracket of twice that lag or four samples; without ``exact`` the first-order fit is returned, its sum on the
+    first-order shift).  ``inner``: a mask of the samples the sums run over (default all).
     ``model`` needs ``torque``, ``twist``, ``torque_noise``, ``twist_noise`` and ``reversals``."""
     torque, twist = model.torque, model.twist
     s_t, s_w = model.torque_noise, model.twist_noise
@@ -140,7 +141,9 @@ def lag_line(model, clock: np.ndarray, drift: bool = False, inner=None):
         return float(np.sum(out.fun**2)), float(out.x[-1])
 
     s_line = line_sum(twist)[0]
-    first_order = line_sum(twist, rate)[1]
+    s_first, first_order = line_sum(twist, rate)
+    if not exact:
+        return s_first, first_order, s_line
     shift = _Shift(twist, clock, model.reversals)
     step = float(np.median(np.diff(clock))) if clock.size > 1 else 1.0
     reach = max(abs(first_order), 4.0 * step)
