@@ -109,8 +109,9 @@ def residual_sums(fitted, record=None, smooth=None) -> dict:
     chosen = model.contact
     base = np.array(fitted.p, dtype=float)[:FIRST_TURNING + reversals.size]
     whole = reversals.size == model.reversals.size and smooth is None  # the stretch is the fitted record itself
-    for name in models.names():
-        contact = models.get(name)
+    contacts = {name: models.get(name) for name in models.names()}
+    contacts[chosen.name] = chosen  # a model passed as an object, not in the table, is compared all the same
+    for name, contact in contacts.items():
         if contact is chosen and whole:  # the fit's own minimum, on the same samples
             r = model.distances(fitted.p)
             out[name] = (float(r @ r), float(fitted.p[SLIP_TORQUE]))
