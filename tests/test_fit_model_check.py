@@ -110,3 +110,15 @@ def test_start_ratios_reach_the_models_plateau():
     ratios = starts.start_ratios(1.5707963267948966)  # the flat punch: pi / 2
     assert ratios[0] == pytest.approx(2.0 / 3.141592653589793, rel=1e-15) and ratios[1] < starts.START_RATIOS[0]
     assert model_check.MODEL_CRITICAL == pytest.approx(15.137, abs=1e-3)
+
+
+def test_a_model_object_outside_the_table_is_checked_too():
+    # a contact model passed as an object, never registered: the check compares it with the table's models (it raised
+    # a KeyError).  On this short cylinders' record every model fits within the noise, so none is rejected.
+    from test_fit_rig_defects import _Toy
+
+    toy = _Toy()
+    assert toy.name not in models.names()
+    record = _record("cylinder", 1.3, 3)
+    fit = _fit(record, model=toy)
+    assert fit.friction.value is not None and not any(w.startswith("model:") for w in fit.warnings)
