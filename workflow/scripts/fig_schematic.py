@@ -23,13 +23,15 @@ def side_view(ax):
         ax.add_patch(arc)
     ax.text(0.66, 1.05, "$T$", color="#D55E00", fontsize=10)
     ax.text(0.66, -1.6, "$T$", color="#D55E00", fontsize=10)
-    ax.annotate("", xy=(0.6, 0.0), xytext=(0.0, 0.0), arrowprops={"arrowstyle": "-|>", "lw": 0.9})
-    ax.annotate("", xy=(0.0, 0.6), xytext=(0.0, 0.0), arrowprops={"arrowstyle": "-|>", "lw": 0.9})
+    # the coordinate arrows over the thick interface line (drawn under it, only the head of r showed)
+    for tip in ((0.6, 0.0), (0.0, 0.6)):
+        ax.annotate("", xy=tip, xytext=(0.0, 0.0), zorder=5,
+                    arrowprops={"arrowstyle": "-|>", "lw": 1.2, "color": "#0072B2"})
     ax.text(0.62, 0.06, "$r$", fontsize=9)
     ax.text(0.06, 0.62, "$z$", fontsize=9)
     ax.annotate("", xy=(1.0, -1.75), xytext=(0.0, -1.75), arrowprops={"arrowstyle": "<->", "lw": 0.8})
     ax.text(0.45, -1.95, "$a$", fontsize=9)
-    ax.text(-0.95, -0.25, "interface $z = 0$", fontsize=8)
+    ax.text(0.12, -0.3, "$z = 0$", fontsize=8)  # the interface (the thick line), right of the dash-dot axis
     ax.set_xlim(-1.4, 1.4)
     ax.set_ylim(-2.4, 2.4)
     ax.set_aspect("equal")
