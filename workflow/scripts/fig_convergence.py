@@ -37,7 +37,7 @@ def main():
             floored(left, n, err, marker, color, f"{name}, $b/a={b:g}$")
             if method == "complete" and b == results[len(results) // 2]["stick_radius"] and n.size:
                 # the theoretical rate 1/N through the first point (not a fit)
-                left.plot(n, err[0] * n[0] / n, "-", color="0.55", lw=0.8, label=r"$\propto 1/N$ (theory)")
+                left.plot(n, err[0] * n[0] / n, "--", color="k", lw=0.8, zorder=5, label=r"$\propto 1/N$ (theory)")
         rows = [r for r in result["rows"] if r["method"] == "fast"]
         floored(right, [r["resolution"] for r in rows], [r["torque_error"] for r in rows], "D-", color,
                 f"$b/a = {b:g}$")
@@ -52,7 +52,11 @@ def main():
     left.set_xlabel("weak forms: number of terms N")
     left.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
     # below the axes, under the x label (each axis label names its method: no legend title to collide with it)
-    left.legend(fontsize=7.5, ncol=1, loc="upper center", bbox_to_anchor=(0.5, -0.24), frameon=False)
+    handles, labels = left.get_legend_handles_labels()
+    last = [i for i, label in enumerate(labels) if "theory" in label]  # the theory line last, after the pairs
+    order = [i for i in range(len(labels)) if i not in last] + last
+    left.legend([handles[i] for i in order], [labels[i] for i in order], fontsize=7.5, ncol=1, loc="upper center",
+                bbox_to_anchor=(0.5, -0.24), frameon=False)
     right.set_xlabel("Abel-Fredholm: Nystr\u00f6m nodes")
     right.set_ylabel(r"$|T^* - T^*_{\rm converged}|$")
     right.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.24), frameon=False)
