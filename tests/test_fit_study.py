@@ -201,3 +201,24 @@ def test_plateau_estimator_bad_input():
         plateau_friction(np.arange(20.0), np.arange(20.0), radius=0.005, normal_force=1000, tail=0.9)
     with pytest.raises(ValueError, match="equal length"):
         plateau_friction(np.arange(20.0), np.arange(19.0), radius=0.005, normal_force=1000)
+
+
+def test_the_study_script_refuses_an_unknown_per_cycle_scenario_before_any_fit(tmp_path):
+    import json
+    import pathlib
+    import subprocess
+    import sys
+
+    root = pathlib.Path(__file__).resolve().parents[1]
+    config = {"replicates": 1, "long_replicates": 0, "seed": 1, "cycles": 2, "sample_rate": 200.0,
+              "long": {"cycles": 50, "frequency": 0.5, "sample_rate": 1000.0},
+              "specimen": {"radius": 0.005, "gauge_length": 0.02, "shear_modulus": 8e10, "friction": 0.6,
+                           "normal_force": 1000.0, "rig_compliance": 1.5e-4},
+              "scenarios": [{"name": "clean", "control": "torque", "amplitude": 1.3}],
+              "window": {"levels": [1.2], "plateau_twists": [2.5e-3]}, "per_cycle": "no-such"}
+    outputs = [arg for name in ("json", "csv", "tex", "window-tex", "macros")
+               for arg in (f"--{name}", str(tmp_path / f"out.{name}"))]
+    run = subprocess.run([sys.executable, str(root / "workflow" / "scripts" / "fit_study.py"), "--config",
+                          json.dumps(config), *outputs], capture_output=True, text=True, cwd=root, timeout=60)
+    assert run.returncode == 2 and "fit_study.per_cycle names no scenario" in run.stderr and "'no-such'" in run.stderr
+    assert list(tmp_path.iterdir()) == []  # nothing written

@@ -269,6 +269,11 @@ def main():
     long_replicates = config["long_replicates"] if args.long_replicates is None else args.long_replicates
     if long_replicates < 0:
         parser.error(f"--long-replicates must be >= 0, got {long_replicates}")
+    cycled = None  # the scenario (a running-in record) whose cycles are fitted one by one, checked before any fit
+    if config.get("per_cycle"):
+        cycled = next((s for s, _ in scenarios_of(config, 0) if s.name == config["per_cycle"]), None)
+        if cycled is None:
+            parser.error(f"fit_study.per_cycle names no scenario of the configuration: {config['per_cycle']!r}")
     specimen = RigSpecimen(**config["specimen"])
     started = time.process_time()
     chosen = scenarios_of(config, long_replicates)
@@ -285,11 +290,8 @@ def main():
                           seed=config["seed"] + 2, specimen=specimen, cycles=config["cycles"],
                           sample_rate=config["sample_rate"])
     per_cycle = None
-    if config.get("per_cycle"):  # the scenario (a running-in record) whose cycles are fitted one by one
-        scenario = next((s for s, _ in scenarios_of(config, 0) if s.name == config["per_cycle"]), None)
-        if scenario is None:
-            parser.error(f"fit_study.per_cycle names no scenario of the configuration: {config['per_cycle']!r}")
-        per_cycle = per_cycle_study(scenario, replicates=replicates, seed=config["seed"] + 3, specimen=specimen)
+    if cycled is not None:
+        per_cycle = per_cycle_study(cycled, replicates=replicates, seed=config["seed"] + 3, specimen=specimen)
     print(f"fit study: {time.process_time() - started:.1f} CPU-s", flush=True)  # the log, not the data
     meta = {"method": "fit_loop on rig records (verification.rig_records), handling on and off; plateau estimator",
             "replicates": replicates, "long_replicates": long_replicates, "seed": config["seed"],
