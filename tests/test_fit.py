@@ -673,9 +673,11 @@ def test_a_loop_that_never_slips_gives_only_a_lower_bound(seed):
     torque, twist = torque_controlled(RIG, amplitude, cycles=2, samples_per_cycle=120)
     torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-6, np.random.default_rng(seed))
     # the slip test's level is 1 - confidence: at 0.95 one stick record in twenty may detect slip (what
-    # test_slip_test_false_alarm_rate allows), so this record-by-record check asks for level 1e-4 (Davies' bound: a
-    # false alarm in at most one record in 10^4)
-    fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0, confidence=0.9999)
+    # test_slip_test_false_alarm_rate allows), so this record-by-record check asks for level 1e-6 (Davies' bound: a
+    # false alarm in at most one record in 10^6).  At level 1e-4 it is a 1e-4 event, and it happens: 3 alarms in
+    # 40000 seeds of this very record (largest statistic 18.5, critical values 15.6-18.2 at 1e-4, 27-31 at 1e-6),
+    # one of them in CI (seed 487596850)
+    fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0, confidence=1 - 1e-6)
     assert not fit.slip_detected and fit.regime == "stick"
     assert fit.stick_test < fit.stick_critical
     assert fit.friction.value is None and fit.shear_modulus.value is None
