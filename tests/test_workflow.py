@@ -212,12 +212,14 @@ def test_the_ladder_reuses_the_cross_checks_converged_weak_forms(built):
 
 def test_the_papers_cite_every_reference_and_resolve_every_label(built):
     """The paper, its supplement and the companion paper share references.bib: every entry is cited by one of
-    them, and none of them leaves a reference, a citation or a generated number undefined."""
+    them, and none of them leaves a reference, a citation or a generated number undefined, or a box overfull."""
     cited = set()
     for build, name in (("build", "ms"), ("build-supplement", "supplement"), ("build-companion", "companion")):
         log = (built / "paper" / build / f"{name}.log").read_text(errors="replace")
         assert not re.search(r"(Reference|Citation) `[^']*' .*undefined", log), f"{name}: undefined reference"
         assert "There were undefined" not in log and "undefined result" not in log, name
+        # nothing sticks out into the margin (a figure drawn wider than the text once did by 25 pt)
+        assert not re.findall(r"Overfull \\[hv]box \(.*", log), f"{name}: {re.findall(r'Overfull .*', log)}"
         for keys in re.findall(r"\\citation\{([^}]*)\}", (built / "paper" / build / f"{name}.aux").read_text()):
             cited.update(k.strip() for k in keys.split(","))
     entries = set(re.findall(r"^@\w+\{([^,]+),", (ROOT / "paper" / "references.bib").read_text(), re.M))

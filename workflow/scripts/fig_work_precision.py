@@ -7,7 +7,7 @@ from _plotting import figure_parser, load_data, save_figure, subplots, use_style
 
 STYLE = {"published": ("s:", "reconstructed printed scheme, N sweep"), "complete": ("o-", "complete, N sweep"),
          "fast": ("D-", "Abel-Fredholm, node sweep"),
-         "reference": ("^--", "complete, arbitrary precision, N = 145, digits sweep (T* only)")}
+         "reference": ("^--", "complete, N = 145, digits sweep (T* only)")}
 FLOOR = 1e-16  # errors at the rounding level (exact zeros included) are drawn here, with open markers
 
 
