@@ -12,6 +12,7 @@ import warnings
 import pytest
 
 from torsional_contact import fit_loop, models
+from torsional_contact.contact_models.base import ContactModel
 from torsional_contact.fitting import model_check, starts
 from torsional_contact.verification.rig_records import RigSpecimen, rig_record
 
@@ -122,3 +123,35 @@ def test_a_model_object_outside_the_table_is_checked_too():
     record = _record("cylinder", 1.3, 3)
     fit = _fit(record, model=toy)
     assert fit.friction.value is not None and not any(w.startswith("model:") for w in fit.warnings)
+
+
+class _Broken(ContactModel):
+    """A model a user might register whose monotonic numbers fail (here: always): the fit under another model must
+    not fail with it."""
+
+    name = "broken-for-the-check"
+    description = "a contact model whose monotonic solution raises"
+    bodies = "none"
+    slip_onset_torque = 1.0
+    gross_slip_torque = 4.0 / 3.0
+    gross_slip_text = "4/3"
+    elastic_bodies = 2
+    shaft = False
+
+    def monotonic_points(self, tau):
+        raise ValueError("no monotonic solution here")
+
+
+def test_a_registered_model_that_cannot_be_fitted_is_named_and_left_out():
+    record = _record("cylinder", 1.3, 3)
+    reference = _fit(record)
+    models.register(_Broken(), replace=True)
+    try:
+        fit = _fit(record)
+    finally:
+        models.unregister(_Broken.name)
+    # the cylinders' fit stands, exactly as without the broken model, and the check says what it could not compare
+    assert fit.friction == reference.friction and fit.compliance == reference.compliance
+    notes = [w for w in fit.warnings if w.startswith("model check:")]
+    assert len(notes) == 1 and repr(_Broken.name) in notes[0] and "ValueError" in notes[0]
+    assert fit.warnings == (*reference.warnings, notes[0])

@@ -66,6 +66,8 @@ MODEL_LEVEL = 1e-4
 MODEL_CRITICAL = float(special.chdtri(1, MODEL_LEVEL))
 #: Turning points of the stretch the check fits (two cycles from the virgin state).
 CHECK_TURNING = 4
+#: The key of ``residual_sums``'s output under which the models that could not be fitted are given, {name: reason}.
+FAILED = "could not be fitted"
 
 
 def _stretch(torque, twist, reversals):
@@ -96,7 +98,9 @@ def residual_sums(fitted, record=None, smooth=None) -> dict:
     """{model name: (residual sum, slip torque)} of every model of the table on the stretch of the record that
     ``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) holds, each fitted from the fit's own parameters (its slip
     torque moved so that the gross-slip plateau stays where it was: the models share every parameter; a grid of
-    starts per model doubled the cost of a short record's fit), and the degrees of freedom under the key None.
+    starts per model doubled the cost of a short record's fit), and the degrees of freedom under the key None; a model
+    other than the chosen one that raises on this loop (ValueError, ArithmeticError, RuntimeError) is left out and
+    named under the key ``FAILED``, {name: reason}.
     ``record`` and ``smooth``: the prepared record and its ``smoothing.SmoothTorque`` when the fit smoothed the
     torque (the raw samples are then used)."""
     model = fitted.model
@@ -118,7 +122,16 @@ def residual_sums(fitted, record=None, smooth=None) -> dict:
             continue
         start = base.copy()
         start[SLIP_TORQUE] *= chosen.gross_slip_torque / contact.gross_slip_torque
-        out[name] = _lean_fit(torque, twist, reversals, torque_noise, model.twist_noise, contact, start)
+        if contact is chosen:
+            out[name] = _lean_fit(torque, twist, reversals, torque_noise, model.twist_noise, contact, start)
+            continue
+        # another model of the table, perhaps one a user registered: when it cannot be evaluated on this loop, the
+        # fit under the chosen model stands and the check says which model it could not compare (never a traceback
+        # from a model the user did not ask for)
+        try:
+            out[name] = _lean_fit(torque, twist, reversals, torque_noise, model.twist_noise, contact, start)
+        except (ValueError, ArithmeticError, RuntimeError) as error:
+            out.setdefault(FAILED, {})[name] = f"{type(error).__name__}: {error}"
     return out
 
 
@@ -126,12 +139,18 @@ def checked_model(fitted, settings, record=None, smooth=None):
     """``fitted`` (a ``loop_fit.Fitted`` of a slipping loop) unchanged when no other model of the table fits its record
     better by more than ``MODEL_CRITICAL`` residual variances; else with no friction value, modulus or compliance
     (``Estimate.withheld`` "model") and a ``model`` warning (module docstring; ``record`` and ``smooth`` as
-    ``residual_sums`` takes them)."""
+    ``residual_sums`` takes them).  A model of the table that could not be fitted to the loop is named in a ``model
+    check`` warning and left out of the comparison."""
     if fitted.p is None:
         return fitted
     chosen = fitted.model.contact.name
     sums = residual_sums(fitted, record, smooth)
     dof = sums.pop(None)
+    failed = sums.pop(FAILED, {})
+    if failed:
+        notes = tuple(f"model check: the {name!r} model could not be fitted to this loop ({reason}); the check "
+                      f"compared {chosen!r} with the other models only" for name, reason in failed.items())
+        fitted = replace(fitted, result=replace(fitted.result, warnings=(*fitted.result.warnings, *notes)))
     best = min(sums, key=lambda name: sums[name][0])
     scale2 = sums[best][0] / dof
     if best == chosen or not scale2 > 0:
