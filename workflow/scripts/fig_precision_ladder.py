@@ -53,7 +53,7 @@ def main():
                 right.semilogy(zeros, [CONVERGENCE_FLOOR] * len(zeros), "o", color=colors[k], mfc="none", ms=5)
     right.set_xlabel("Nystr\u00f6m nodes $n$")
     right.set_ylabel(r"$|T^*_n - T^*_{\rm ref}|$")
-    right.set_title("(c) nodes, arbitrary precision", fontsize=8)
+    right.set_title("(c) arbitrary precision", fontsize=8)
     if conv:  # line style = working precision: long handles so that it shows
         right.legend(fontsize=7.5, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=1, frameon=False,
                      handlelength=3.0)
