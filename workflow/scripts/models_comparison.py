@@ -126,8 +126,9 @@ def main():
     ax_fit.set_xlabel(r"$A/(2T^*_\mathrm{gs})$ of the true contact")
     ax_fit.set_ylabel(r"apparent friction $f_\mathrm{fit}/f$")
     ax_fit.set_title("(d) friction from a wrong-model fit", fontsize=9)
-    # three and a half decades: the band of agreement about 2 pt high as printed; the legend above the curves
-    top = max(float(np.max(f["ratio"][np.isfinite(f["ratio"])])) for f in fits)
+    # up to half a decade or more above the largest ratio: the band of agreement about 2 pt high as printed, the
+    # legend in the empty upper left
+    top = max(float(np.max(f["ratio"][np.isfinite(f["ratio"])], initial=1.0)) for f in fits)
     ax_fit.set_ylim(1e-2, 10 ** math.ceil(math.log10(top) + 0.5))
     ax_fit.legend(fontsize=7.5, loc="upper left", labelspacing=0.3)
     save_figure(fig, a.pdf, a.png)
