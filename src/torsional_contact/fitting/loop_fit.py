@@ -389,17 +389,18 @@ def _profile_intervals(model, p, s_min, scale2, cov, critical, t_quantile, lower
               ("product", -1): (KAPPA_MIN * p[COMPLIANCE], None), ("product", 1): (None, None),
               # C -> 0 (a contact whose own twist is linear in the torque takes it all): no lower end
               ("compliance", -1): (1e-6 * p[COMPLIANCE], None), ("compliance", 1): (None, None)}
-    ends = {}
-    for kind in ("slip_torque", "product", "compliance"):
-        for side in (-1, 1):
-            limit, limit_lr = limits[(kind, side)]
-            if limit is not None and side * (limit - value[kind]) <= 0:
-                ends[(kind, side)] = profiles.ProfileEnd(None, None, 0)
-                continue
-            first = t_quantile * se[kind] if se[kind] > 0 else 0.1 * abs(value[kind])
-            ends[(kind, side)] = profiles.profile_end(model, p, s_min, scale2, kind, side, first, critical, lower,
-                                                      upper, KAPPA_MAX, limit, limit_lr, better_minimum, cov)
-    return ends
+
+    def search(kind, side, start_from=None):
+        limit, limit_lr = limits[(kind, side)]
+        if limit is not None and side * (limit - value[kind]) <= 0:
+            return profiles.ProfileEnd(None, None, 0)
+        first = t_quantile * se[kind] if se[kind] > 0 else 0.1 * abs(value[kind])
+        return profiles.profile_end(model, p, s_min, scale2, kind, side, first, critical, lower, upper, KAPPA_MAX,
+                                    limit, limit_lr, better_minimum, cov, start_from)
+
+    ends = {(kind, side): search(kind, side) for kind in ("slip_torque", "product", "compliance") for side in (-1, 1)}
+    return profiles.across_valleys(ends, model, p, s_min, scale2, critical, lower, upper, KAPPA_MAX, search,
+                                   better_minimum)
 
 
 def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence, common, notes,

@@ -35,6 +35,13 @@ within the tolerance, and bisection would only narrow the jump until the fits ru
 An end beyond a parameter's limit (y = 0, or T_s above the largest torque, where the profile is
 flat) is unbounded.  A profile point below S_min means that the first fit stopped in a local
 minimum: ``BetterMinimum`` carries the point, and the caller starts again from there.
+
+Each search follows one valley of S, and S can have two along kappa: the ridge of a partial-slip loop
+with kappa at its bound and one at a small kappa (a smaller T_s), apart by a saddle.  A compliance end
+found in the first may lie inside the interval the second gives (for about one record in twelve of
+T* 1.3 under 1e-5 rad of twist noise, sqrt(LR) at the end 0.03-0.5 below sqrt(F) from the other
+valley: an interval too narrow).  ``across_valleys`` fits each end of T_s and C again from the points
+of least and largest kappa, and where one is inside the interval the search goes on outward from it.
 """
 
 from __future__ import annotations
@@ -49,8 +56,8 @@ from scipy import optimize, sparse
 from .loop_model import LoopModel
 from .parameters import COMPLIANCE, KAPPA, SLIP_TORQUE
 
-__all__ = ["Constraint", "fit", "covariance", "is_large", "ProfileEnd", "profile_end", "BetterMinimum",
-           "ROOT_TOLERANCE"]
+__all__ = ["Constraint", "fit", "covariance", "is_large", "ProfileEnd", "profile_end", "across_valleys",
+           "BetterMinimum", "ROOT_TOLERANCE"]
 
 #: Relative tolerance on sqrt(LR) at an interval's end.
 ROOT_TOLERANCE = 0.015
@@ -82,6 +89,8 @@ LSMR_TOLERANCE = 1e-10
 FIRST_STEP_CAP = 0.05
 #: A profile point this far (in LR units) below the minimum is a better minimum, not rounding.
 BETTER_MINIMUM_SLACK = 0.05
+#: Profile points whose kappa differ by more than this factor are taken for different valleys of S (``across_valleys``).
+VALLEY_RATIO = 1.5
 
 
 class BetterMinimum(Exception):
@@ -257,9 +266,22 @@ def _bracketed_newton(points, lo: float, hi: float, target: float) -> float:
     return inside[0] if inside else math.nan
 
 
+def _start_at(start, kind: str, psi: float, kappa_max: float) -> np.ndarray:
+    """A constrained fit's start: ``start`` with psi held at its value (for the product, C at least psi / kappa_max)."""
+    start = np.array(start, dtype=float)
+    if kind == "slip_torque":
+        start[SLIP_TORQUE] = psi
+    elif kind == "compliance":
+        start[COMPLIANCE] = psi
+    else:
+        start[COMPLIANCE] = max(start[COMPLIANCE], psi / kappa_max * (1 + 1e-9))
+    return start
+
+
 def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str, side: int, first_step: float,
                 critical: float, lower, upper, kappa_max: float, limit: float | None = None,
-                limit_lr: float | None = None, better_minimum: bool = True, covariance=None) -> ProfileEnd:
+                limit_lr: float | None = None, better_minimum: bool = True, covariance=None,
+                start_from: tuple | None = None) -> ProfileEnd:
     """The end of the profile interval of psi (``Constraint`` kind) on ``side`` (+1 above psi_hat, -1 below).
 
     ``first_step`` > 0: the first trial distance from psi_hat (the Wald half-width).  ``limit``: the
@@ -277,7 +299,9 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     first trial distance is the Wald half-width down to 1e-6 of psi's scale (1e-3 otherwise): a 10^5-sample
     torque-controlled record's ends took 16 constrained fits instead of 27, the same to 1e-6.  Not on smaller
     records: on the flat, curved ridges of a short partial-slip loop the prediction led a constrained fit into
-    another valley (a regression record of ``tests/test_fit.py``).
+    another valley (a regression record of ``tests/test_fit.py``).  ``start_from``: (psi, parameters) of a
+    point inside the interval in another valley (``across_valleys``): the search starts with a fit there from those
+    parameters and goes on outward from it, each later fit started from the nearest point as above.
     """
     psi_hat = Constraint(kind, 0.0).of(p_hat)
     target = math.sqrt(critical)
@@ -295,14 +319,17 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
             [p_hat[COMPLIANCE], p_hat[KAPPA]] if kind == "product" else [1.0])
         variance = float(gradient @ covariance @ gradient)
         tangent = covariance @ gradient / variance if variance > 0 else None
+    if start_from is not None:  # another valley than the estimate's: the tangent at the estimate says nothing there
+        tangent = None
 
     def psi_at(delta):
         """psi at that distance; the limit itself (not psi_hat + side span, which rounds to either side of it) there,
         so that a caller can tell an end the data set from one at the limit."""
         return limit if limit is not None and delta >= span else psi_hat + side * delta
 
-    def evaluate(delta, from_minimum=False):
-        """(r, parameters, whether the fit started outside the interval) of the constrained fit at delta."""
+    def evaluate(delta, from_minimum=False, given=None):
+        """(r, parameters, whether the fit started outside the interval) of the constrained fit at delta (from the
+        parameters ``given``, or as below)."""
         nonlocal steps
         psi = psi_at(delta)
         # from the nearest point of the profile that is not far outside the interval (a fit far out may have
@@ -311,16 +338,12 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         # with the tangent (a large record), always from the minimum: its prediction needs no nearer point, and no
         # start from outside the interval then needs checking from the minimum
         nearest = sane[0] if from_minimum or tangent is not None else min(sane, key=lambda pt: abs(pt[0] - delta))
+        if given is not None:
+            nearest = (delta, 0.0, 0.0, given)
         start = np.array(nearest[3], dtype=float)
         if tangent is not None:
             start = start + tangent * (psi - Constraint(kind, 0.0).of(start))
-        if kind == "slip_torque":
-            start[SLIP_TORQUE] = psi
-        elif kind == "compliance":
-            start[COMPLIANCE] = psi
-        else:
-            start[COMPLIANCE] = max(start[COMPLIANCE], psi / kappa_max * (1 + 1e-9))
-        p, s, _ = fit(model, start, lower, upper, Constraint(kind, psi), kappa_max)
+        p, s, _ = fit(model, _start_at(start, kind, psi, kappa_max), lower, upper, Constraint(kind, psi), kappa_max)
         steps += 1
         lr = (s - s_min) / scale2
         if lr < -BETTER_MINIMUM_SLACK and better_minimum:
@@ -350,10 +373,14 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
     # (on a large record, whose likelihood is near quadratic, the Wald half-width is trusted down to 1e-6 of the scale:
     # a 10^5-sample record's compliance is known to 1.5e-4, and a first fit at 1e-3 landed at LR 190, costing two)
     delta = min(max(delta, (1e-6 if tangent is not None else 1e-3) * scale), 0.2 * scale, reach)
+    given = None
+    if start_from is not None:
+        delta, given = min(side * (start_from[0] - psi_hat), reach), start_from[1]
     lo, hi = 0.0, math.inf  # the bracket: r < target at lo, r >= target at hi
     step, last_step = math.inf, math.inf
     while steps < MAX_PROFILE_STEPS or (hi < math.inf and steps < MAX_PROFILE_STEPS + BRACKETED_STEPS):
-        r, p, from_outside = evaluate(delta)
+        r, p, from_outside = evaluate(delta, given=given)
+        given = None
         if abs(r - target) <= ROOT_TOLERANCE * target and from_outside:
             # an end reached from a fit outside the interval may sit in that fit's valley, above the profile: the fit
             # from the minimum decides (the lower is the profile)
@@ -394,3 +421,38 @@ def profile_end(model: LoopModel, p_hat, s_min: float, scale2: float, kind: str,
         return ProfileEnd(psi_at(hi), outer[3], steps, kind != "compliance"
                           and outer[3][KAPPA] >= kappa_max * (1 - 1e-6))
     return ProfileEnd(None, None, steps)
+
+
+def across_valleys(ends: dict, model: LoopModel, p_hat, s_min: float, scale2: float, critical: float, lower, upper,
+                   kappa_max: float, search, better_minimum: bool = True) -> dict:
+    """The ends {(kind, side): ProfileEnd}, each checked from the other valleys of S (module docstring).
+
+    Each end is fitted again (psi held at it) from those of the estimate's and the other ends' parameters with the
+    least and the largest kappa, where that kappa differs from the end's own by more than ``VALLEY_RATIO``.  Where
+    one of these fits has sqrt(LR) below sqrt(F) by more than ``ROOT_TOLERANCE``, the end lies inside the interval:
+    ``search(kind, side, (psi, p))`` (``profile_end`` with ``start_from``) goes on outward from there.  The ends of
+    y = kappa C are not checked: the data fix C to a few 1e-3, so holding y holds kappa, and a profile of y runs
+    across the valleys, not along one.  One round: the ends a search from another valley finds are not checked
+    again.  Raises ``BetterMinimum`` as ``profile_end`` does."""
+    target = math.sqrt(critical)
+    found = [np.asarray(p_hat, dtype=float)] + [end.p for end in ends.values() if end.p is not None]
+    checked = dict(ends)
+    for (kind, side), end in ends.items():
+        if end.value is None or end.p is None or kind == "product":
+            continue
+        # the valleys lie at the ends of kappa's range (at its bound, and at a small kappa): the points of least and
+        # of largest kappa stand for them
+        extremes = [min(found, key=lambda q: q[KAPPA]), max(found, key=lambda q: q[KAPPA])]
+        others = [q for q in extremes if abs(math.log(q[KAPPA] / end.p[KAPPA])) > math.log(VALLEY_RATIO)]
+        best = None
+        for q in others:
+            p, s, _ = fit(model, _start_at(q, kind, end.value, kappa_max), lower, upper, Constraint(kind, end.value),
+                          kappa_max)
+            lr = (s - s_min) / scale2
+            if lr < -BETTER_MINIMUM_SLACK and better_minimum:
+                raise BetterMinimum(p, s)
+            if math.sqrt(max(lr, 0.0)) < target * (1 - ROOT_TOLERANCE) and (best is None or s < best[1]):
+                best = (p, s)
+        if best is not None:
+            checked[(kind, side)] = search(kind, side, (end.value, best[0]))
+    return checked
