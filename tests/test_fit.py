@@ -680,6 +680,40 @@ def test_noisy_gross_slip_loop_within_its_interval(seed):
     assert fit.interval_method == "profile likelihood" and not fit.noise_limited
 
 
+def test_a_slip_hidden_in_twist_noise_is_found_from_the_slipping_start():
+    """T* 1.3 under 1e-4 rad of twist noise (a slip of tens of microradians): the grid's best point by the first-order
+    distances is the straight loop, and the fit from it alone stayed there; the slip test found nothing and the
+    straight loop's C was 3.2 standard errors high, its interval excluding the truth (this seed).  The fit from the
+    grid's best slipping point too (``starts._starts``) finds the slip; checked independently: the true loop, refitted
+    from the rig's own parameters, lies below the straight loop by more than the slip test's critical value."""
+    torque, twist = torque_controlled(RIG, 1.3 * RIG.slip_torque, cycles=2, samples_per_cycle=200)
+    torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-4, np.random.default_rng(10))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", NoiseLimitedFitWarning)
+        fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0)
+    assert fit.slip_detected and fit.regime == "partial-slip"
+    lo, hi = fit.compliance.interval
+    assert lo <= RIG.compliance <= hi
+    model = _model(torque, twist, fit.noise["torque"], fit.noise["twist"])
+    line = loop_fit._stick_line(model)
+    truth = np.concatenate([[RIG.slip_torque, RIG.contact_twist / (RIG.compliance * RIG.slip_torque),
+                             RIG.compliance, RIG.offset], twist[model.reversals]])
+    lower = np.full(truth.size, -np.inf)
+    upper = np.full(truth.size, np.inf)
+    lower[:3] = [1e-9, loop_fit.KAPPA_MIN, 1e-9]
+    upper[1] = loop_fit.KAPPA_MAX
+    reach = loop_fit.REVERSAL_REACH * math.hypot(fit.noise["twist"], line.x[0] * fit.noise["torque"])
+    lower[4:] = twist[model.reversals] - reach
+    upper[4:] = twist[model.reversals] + reach
+    s_truth = profile.fit(model, truth, lower, upper)[1]
+    s_fit = float(np.sum(model.distances(fit.parameters) ** 2))
+    scale2 = s_fit / fit.dof
+    # the slip the record holds: the true loop's valley lies further below the straight loop than the slip test's
+    # critical value (so the test must find it), and so does the fit's minimum
+    assert (float(np.sum(line.fun**2)) - s_truth) / scale2 > fit.stick_critical
+    assert fit.stick_test > fit.stick_critical
+
+
 @pytest.mark.parametrize("seed", seeds())
 def test_a_loop_that_never_slips_gives_only_a_lower_bound(seed):
     amplitude = 0.8 * RIG.slip_torque

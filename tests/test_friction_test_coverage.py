@@ -65,3 +65,25 @@ def test_interval_and_bound_coverage_are_reported_apart_with_clopper_pearson_int
                     assert f"{rate['count']}/{rate['trials']}" in table
                 else:
                     assert rate["interval"] is None
+
+
+def test_the_verdict_against_the_nominal_range_follows_the_binomial_quantiles():
+    """'below' / 'within' / 'above' the counts a true 95 % coverage gives in 95 % of studies of that many trials:
+    checked against the binomial distribution summed directly (the quantile is the least k with P(X <= k) >= q)."""
+    sys.path.insert(0, str(SCRIPT.parent))
+    try:
+        from friction_test_coverage import nominal_verdict
+    finally:
+        sys.path.remove(str(SCRIPT.parent))
+    from math import comb
+
+    def cdf(k, n, p=0.95):
+        return sum(comb(n, j) * p**j * (1 - p) ** (n - j) for j in range(k + 1))
+
+    for trials in (1, 20, 61, 64):
+        lowest = next(k for k in range(trials + 1) if cdf(k, trials) >= 0.025)
+        highest = next(k for k in range(trials + 1) if cdf(k, trials) >= 0.975)
+        for count in range(trials + 1):
+            expected = "below" if count < lowest else "above" if count > highest else "within"
+            assert nominal_verdict({"count": count, "trials": trials}) == expected, (count, trials)
+    assert nominal_verdict({"count": 0, "trials": 0}) == "--"

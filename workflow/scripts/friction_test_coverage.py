@@ -148,6 +148,17 @@ def _kn(entry):
     return "--" if not entry["trials"] else f"{entry['count']}/{entry['trials']}"
 
 
+def nominal_verdict(entry) -> str:
+    """'below', 'within' or 'above' the range of counts a true coverage of ``CONFIDENCE`` gives in 95 % of studies
+    with the entry's trials (binomial quantiles, as ``ft-nominal-lo`` / ``-hi`` for all draws); '--' without trials."""
+    trials = entry["trials"]
+    if not trials:
+        return "--"
+    count = entry["count"]
+    lowest, highest = (binom.ppf(q, trials, CONFIDENCE) for q in ((1 - CONFIDENCE) / 2, (1 + CONFIDENCE) / 2))
+    return "below" if count < lowest else "above" if count > highest else "within"
+
+
 def _cp(entry):
     """'[lo, hi]' of a rate's Clopper-Pearson interval in per cent, empty without trials."""
     if not entry["trials"]:
@@ -248,6 +259,7 @@ def main():
                 lo, hi = c["interval"] if c["trials"] else (None, None)
                 macros[f"ft-{key}-{tag}-lo-{short}"] = _percent(lo)
                 macros[f"ft-{key}-{tag}-hi-{short}"] = _percent(hi)
+                macros[f"ft-{key}-{tag}-verdict-{short}"] = nominal_verdict(c)
             macros[f"ft-{key}-interval-{short}"] = _percent(e["interval"])
             macros[f"ft-{key}-bound-{short}"] = _percent(e["bound"])
             macros[f"ft-{key}-width-{short}"] = _percent(e["median_width"], 1)

@@ -44,7 +44,8 @@ kappa <= ``KAPPA_MAX``, each U_j within ``REVERSAL_REACH`` noise levels of its s
 residuals with their analytic Jacobian (``fitting.profile.fit``), from the best point of a grid of
 starting values (T_s from 0.75 to 1.05 times the largest torque, kappa from 0.02 to 1; C and
 theta_0 from a straight-line fit to all samples and to the central ones, |T| < max|T| / 2, which
-stay in stick on every branch of a symmetric loop).  A slipping loop that another contact model
+stay in stick on every branch of a symmetric loop), and also from its best slipping point when the
+best is a straight loop (``starts._starts``).  A slipping loop that another contact model
 fits clearly better gets no friction value (``fitting.model_check``).
 
 Did it slip?
@@ -141,7 +142,7 @@ from .starts import (  # noqa: F401 - the starting points' names, as the tests a
     _central_line,
     _clipping_reference,
     _line_foot,
-    _start,
+    _starts,
     _stick_equivalent,
     _stick_line,
     off_the_bound,
@@ -286,7 +287,8 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     central = _central_line(model, peak)
     if central is not None:
         lines.append(central)
-    start = _start(model, lines, twist[reversal_index], peak) if start is None else np.array(start, dtype=float)
+    starts = _starts(model, lines, twist[reversal_index], peak) if start is None else [np.array(start, dtype=float)]
+    start = starts[0]
     lower = np.full(start.size, -np.inf)
     upper = np.full(start.size, np.inf)
     lower[CORE] = [1e-9 * peak, KAPPA_MIN, min(c for c, _ in lines) * 1e-6]
@@ -297,7 +299,7 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
     lower[TURNING] = twist[reversal_index] - reach
     upper[TURNING] = twist[reversal_index] + reach
     dof = n - 4  # N - M distances and 2 M reversal residuals for 4 + M parameters (``loop_model``)
-    p, s_full, result = profiles.fit(model, start, lower, upper)
+    p, s_full, result = min((profiles.fit(model, point, lower, upper) for point in starts), key=lambda fit: fit[1])
     # the straight loop is a loop of the full model (a slip torque above the largest torque): the fit from there
     # can end no worse than the straight loop, so that the slip test's statistic is >= 0 by construction
     p_line = _stick_equivalent(model, line.x, peak, lower, upper, KAPPA_MIN)
@@ -433,7 +435,8 @@ def _stick_result(model, line, s_stick, stick_test, stick_critical, peak, force,
                     f"a) = {bound:.4g} (lower_bound); a slip too small to detect is not excluded, and "
                     if bound is not None else "the contact slips at any torque, so its twist is too small to see: ")
                  + f"what the record proves whatever G is |T*| <= {model.contact.gross_slip_text}: f >= "
-                 f"(2 / {gross:.4g}) (max|T| - 2 s_T) / (F a) = {proven:.4g} (interval); G is not identified"),
+                 f"(2 / {gross:.4g}) (max|T| - 2 s_T) / (F a) = {proven:.4g} (interval); G is not identified; C is "
+                 "the straight loop's slope, which a slip too small to detect makes steeper than the rig's"),
         **common)
 
 

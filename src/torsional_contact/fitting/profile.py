@@ -40,8 +40,8 @@ Each search follows one valley of S, and S can have two along kappa: the ridge o
 with kappa at its bound and one at a small kappa (a smaller T_s), apart by a saddle.  A compliance end
 found in the first may lie inside the interval the second gives (for about one record in twelve of
 T* 1.3 under 1e-5 rad of twist noise, sqrt(LR) at the end 0.03-0.5 below sqrt(F) from the other
-valley: an interval too narrow).  ``across_valleys`` fits each end of T_s and C again from the points
-of least and largest kappa, and where one is inside the interval the search goes on outward from it.
+valley: an interval too narrow).  ``across_valleys`` fits each end of C again from the points of least
+and largest kappa, and where one is inside the interval the search goes on outward from it.
 """
 
 from __future__ import annotations
@@ -90,7 +90,7 @@ FIRST_STEP_CAP = 0.05
 #: A profile point this far (in LR units) below the minimum is a better minimum, not rounding.
 BETTER_MINIMUM_SLACK = 0.05
 #: Profile points whose kappa differ by more than this factor are taken for different valleys of S (``across_valleys``).
-VALLEY_RATIO = 1.5
+VALLEY_RATIO = 2.0
 
 
 class BetterMinimum(Exception):
@@ -430,15 +430,16 @@ def across_valleys(ends: dict, model: LoopModel, p_hat, s_min: float, scale2: fl
     Each end is fitted again (psi held at it) from those of the estimate's and the other ends' parameters with the
     least and the largest kappa, where that kappa differs from the end's own by more than ``VALLEY_RATIO``.  Where
     one of these fits has sqrt(LR) below sqrt(F) by more than ``ROOT_TOLERANCE``, the end lies inside the interval:
-    ``search(kind, side, (psi, p))`` (``profile_end`` with ``start_from``) goes on outward from there.  The ends of
-    y = kappa C are not checked: the data fix C to a few 1e-3, so holding y holds kappa, and a profile of y runs
-    across the valleys, not along one.  One round: the ends a search from another valley finds are not checked
-    again.  Raises ``BetterMinimum`` as ``profile_end`` does."""
+    ``search(kind, side, (psi, p))`` (``profile_end`` with ``start_from``) goes on outward from there.  Only the ends
+    of C are checked: the valleys differ in T_s and kappa, and the data fix C to a few 1e-3, so holding T_s or
+    y = kappa C (holding kappa) picks one valley, and those profiles run across the valleys, not along one (the
+    ends of T_s and y were never lower from the other valley on the records above).  One round: the ends a search
+    from another valley finds are not checked again.  Raises ``BetterMinimum`` as ``profile_end`` does."""
     target = math.sqrt(critical)
     found = [np.asarray(p_hat, dtype=float)] + [end.p for end in ends.values() if end.p is not None]
     checked = dict(ends)
     for (kind, side), end in ends.items():
-        if end.value is None or end.p is None or kind == "product":
+        if end.value is None or end.p is None or kind != "compliance":
             continue
         # the valleys lie at the ends of kappa's range (at its bound, and at a small kappa): the points of least and
         # of largest kappa stand for them
@@ -456,3 +457,4 @@ def across_valleys(ends: dict, model: LoopModel, p_hat, s_min: float, scale2: fl
         if best is not None:
             checked[(kind, side)] = search(kind, side, (end.value, best[0]))
     return checked
+
