@@ -91,9 +91,9 @@ def _starts(model: LoopModel, lines, reversals, peak) -> list[np.ndarray]:
 
     The first-order distances favour the straight loop where the slip's twist is small against the twist noise: on
     torque-controlled records at T* 1.3 under 1e-4 rad (tens of microradians of slip) the fit from the straight
-    start stayed on the straight loop, the slip test found nothing (15 of 64 records declared stuck), and the
+    start stayed on the straight loop, the slip test found nothing (19 of 64 records declared stuck), and the
     straight loop's C was 2-5 standard errors high with a tight interval; from the slipping start the fit of such a
-    record ends 28 residual variances below the straight loop."""
+    record (``tests/test_fit.py``) ends 19.7 residual variances below the straight loop (critical value 11.0)."""
     grid = _grid(model, lines, reversals, peak)
     onset = model.contact.slip_onset_torque
     starts = [grid[0][1]]
