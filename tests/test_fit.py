@@ -714,6 +714,44 @@ def test_a_slip_hidden_in_twist_noise_is_found_from_the_slipping_start():
     assert fit.stick_test > fit.stick_critical
 
 
+@pytest.mark.parametrize("seed", [14, 67])
+def test_a_stuck_contact_whose_noise_passes_the_slip_test_is_warned_about(seed):
+    """A loop that never slips (T* 0.8) passes the slip test at its 5 % level in about one record in twenty, and its
+    friction value is then wrong (seed 67: f 0.366 [0.358, 0.369] against the true 0.6).  Such a record's statistic
+    lies below the test's critical value at ``slip_test.STRICT_LEVEL`` (a stuck record exceeds it in one in a
+    thousand), and the fit says so: a ``marginal slip`` warning.  Checked against Davies' bound computed here for
+    the record's own path of the score."""
+    torque, twist = torque_controlled(RIG, 0.8 * RIG.slip_torque, cycles=2, samples_per_cycle=200)
+    torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(seed))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", NoiseLimitedFitWarning)
+        fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0)
+    assert fit.slip_detected and fit.stick_test >= fit.stick_critical
+    assert not fit.friction.interval[0] <= RIG.friction <= (fit.friction.interval[1] or math.inf)
+    model = _model(torque, twist, fit.noise["torque"], fit.noise["twist"])
+    line = loop_fit._stick_line(model)
+    foot = loop_fit._line_foot(torque, twist, *line.x, fit.noise["torque"], fit.noise["twist"])
+    length = slip_test.path_length(model, *line.x, foot)
+    strict = slip_test.critical_value(length, slip_test.STRICT_LEVEL)
+    # Davies' bound at the strict critical value is the strict level (the root solved to 1e-10 in c)
+    tail = stats.norm.sf(math.sqrt(strict)) + length / (2 * math.pi) * math.exp(-strict / 2)
+    assert_close(tail, slip_test.STRICT_LEVEL, "brentq's xtol 1e-10 on c times |d tail / dc| < 1, tenfold",
+                 atol=1e-9)
+    assert fit.stick_test < strict
+    assert [w for w in fit.warnings if w.startswith("marginal slip")], fit.warnings
+
+
+def test_a_clearly_slipping_loop_gets_no_marginal_slip_warning():
+    """T* 1.3 under 1e-5 rad: the statistic is far above the critical value at ``slip_test.STRICT_LEVEL``."""
+    torque, twist = torque_controlled(RIG, 1.3 * RIG.slip_torque, cycles=2, samples_per_cycle=200)
+    torque, twist = noisy(torque, twist, 0.005 * np.ptp(torque), 1e-5, np.random.default_rng(3))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", NoiseLimitedFitWarning)
+        fit = fit_loop(torque, twist, radius=0.005, normal_force=1000.0)
+    assert fit.stick_test > slip_test.critical_value(2.0 * (slip_test.GRID - 1), slip_test.STRICT_LEVEL)
+    assert not [w for w in fit.warnings if w.startswith("marginal slip")]
+
+
 @pytest.mark.parametrize("seed", seeds())
 def test_a_loop_that_never_slips_gives_only_a_lower_bound(seed):
     amplitude = 0.8 * RIG.slip_torque

@@ -131,7 +131,7 @@ from .per_cycle import cycles_with_progress, withheld_cycles
 from .record_checks import checked_time, many_reversals_note, prepared_record
 from .results import Estimate, LoopFit
 from .samples import checked_loop
-from .slip_test import GRID, critical_value, path_length
+from .slip_test import GRID, critical_value, marginal_note, path_length
 from .smoothing import smoothed_torque, widened_for_smoothing
 from .starts import (  # noqa: F401 - the starting points' names, as the tests and the docstring use them
     PLATEAU_CLEARANCE,
@@ -333,8 +333,7 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
         notes.append(f"optimisation: the slip fit ended {(s_test - s_stick) / scale2:.3g} residual variances above the "
                      "straight loop it started from (a failed optimisation; the slip test is read as 0)")
     stick_test = max((s_stick - min(s_test, s_stick)) / scale2, 0.0)
-    # Davies' bound needs the path of the score only when the statistic is not far above any critical value it can
-    # give (the unit score's path over GRID points is at most 2 (GRID - 1) long)
+    # Davies' bound with the score's path only near a critical value (the path over GRID points is <= 2 (GRID - 1))
     stick_critical = critical_value(2.0 * (GRID - 1), 1.0 - confidence)
     if stick_test < stick_critical:
         stick_critical = critical_value(path_length(model, compliance_0, offset_0, foot_0), 1.0 - confidence)
@@ -345,6 +344,7 @@ def _fit_prepared(torque, twist, reversal_index, s_t, s_theta, notes, spikes, se
         return Fitted(_stick_result(model, line, s_stick, stick_test, stick_critical, peak, force, a, confidence,
                                     common, notes, record_spikes), model, None, line)
 
+    notes.extend(filter(None, [marginal_note(stick_test, 1.0 - confidence, model, compliance_0, offset_0, foot_0)]))
     critical = float(special.fdtri(1, dof, confidence))  # F(1, dof) quantile
     t_quantile = math.sqrt(critical)
     clipped = None

@@ -36,7 +36,7 @@ from .loop_model import LoopModel
 from .parameters import KAPPA, OFFSET, vector
 from .profile import is_large
 
-__all__ = ["unit_scores", "path_length", "critical_value", "GRID"]
+__all__ = ["unit_scores", "path_length", "critical_value", "marginal_note", "GRID", "STRICT_LEVEL"]
 
 #: Values of T_s on which the path of the unit score is followed: the critical value changes by less than
 #: 0.05 from 40 to 1000 points (a change of the test's level below 1e-3), and costs about 10 ms.
@@ -104,3 +104,24 @@ def critical_value(length: float, level: float = 0.05) -> float:
         return low
     high = max(2 * math.log(length / (2 * math.pi * level)) + 1.0, low) + 10.0
     return float(optimize.brentq(excess, low, high, xtol=1e-10))
+
+
+#: The level at which a detected slip is also tested (``marginal_note``): a contact that stuck throughout passes the
+#: test at 5 % in one record in twenty, with a friction value that is wrong (its interval excludes the truth); above
+#: the critical value at this level in one in a thousand.
+STRICT_LEVEL = 1e-3
+
+
+def marginal_note(statistic: float, level: float, model: LoopModel, compliance: float, offset: float,
+                  foot: np.ndarray) -> str | None:
+    """The warning for a slip detected at ``level`` but not at ``STRICT_LEVEL`` (None otherwise); the other arguments
+    are those of ``path_length``, whose V is computed only when the statistic lies below the largest critical value
+    at ``STRICT_LEVEL`` any path of ``GRID`` points can give."""
+    if level <= STRICT_LEVEL or statistic >= critical_value(2.0 * (GRID - 1), STRICT_LEVEL):
+        return None
+    strict = critical_value(path_length(model, compliance, offset, foot), STRICT_LEVEL)
+    if statistic >= strict:
+        return None
+    return (f"marginal slip: the slip test's statistic {statistic:.3g} passes its critical value at level {level:g} "
+            f"but not the {strict:.3g} at level {STRICT_LEVEL:g}; a contact that stuck throughout gives this in "
+            f"about {level:.0%} of records, and its friction value is then wrong")
